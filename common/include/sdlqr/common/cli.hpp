@@ -1,0 +1,61 @@
+#pragma once
+// Command-line parsing shared by every executable: --help on each, one-line errors, exit code 2.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace sdlqr {
+
+class ArgParser {
+ public:
+  ArgParser(std::string program, std::string summary);
+
+  void addFlag(const std::string& name, bool* out, const std::string& help);
+  void addOption(const std::string& name, std::string* out, const std::string& metavar, const std::string& help);
+  void addOption(const std::string& name, double* out, const std::string& metavar, const std::string& help);
+  void addOption(const std::string& name, int* out, const std::string& metavar, const std::string& help);
+  void addOption(const std::string& name, long long* out, const std::string& metavar, const std::string& help);
+  // Free-form trailing text for --help (examples, exit codes).
+  void setEpilog(std::string epilog) { epilog_ = std::move(epilog); }
+  // Remaining non-option words are collected here when set; otherwise they are an error.
+  void allowPositional(std::vector<std::string>* out, const std::string& metavar) {
+    positional_ = out;
+    positional_metavar_ = metavar;
+  }
+
+  // Prints usage and exits 0 on --help; prints "<program>: <error>" and exits 2 on bad input.
+  void parseOrExit(int argc, const char* const* argv) const;
+  // As above without exiting: returns an error text (empty on success); sets *help_requested.
+  std::string parse(int argc, const char* const* argv, bool* help_requested) const;
+  std::string usage() const;
+  const std::string& program() const { return program_; }
+
+ private:
+  struct Entry {
+    std::string name;
+    std::string metavar;  // empty for flags
+    std::string help;
+    std::function<std::string(const std::string&)> set;  // returns an error text
+  };
+  std::string program_;
+  std::string summary_;
+  std::string epilog_;
+  std::vector<Entry> entries_;
+  std::vector<std::string>* positional_ = nullptr;
+  std::string positional_metavar_;
+};
+
+// Standard options of every flight process (DESIGN §2).
+struct ProcessOptions {
+  std::string config_path;  // vehicle YAML
+  std::string lcm_url;      // empty: $LCM_DEFAULT_URL or LCM's default
+  std::string vehicle;      // channel prefix
+};
+void addProcessOptions(ArgParser& parser, ProcessOptions* options);
+
+// Runs `body`, turning a ConfigError or std::invalid_argument into a one-line message and exit
+// code 2, any other exception into a one-line message and exit code 1.
+int runMain(const std::string& program, const std::function<int()>& body);
+
+}  // namespace sdlqr

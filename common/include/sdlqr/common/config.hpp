@@ -1,0 +1,59 @@
+#pragma once
+// Strict YAML reading for every parameter struct: a wrong type, a wrong length, a non-finite
+// number or an unknown key becomes a ConfigError naming the full key ("lqr.r_diag[2]"), which
+// every executable prints as one line before exiting with code 2.
+
+#include <yaml-cpp/yaml.h>
+
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Core>
+
+namespace sdlqr {
+
+class ConfigError : public std::runtime_error {
+ public:
+  ConfigError(const std::string& key, const std::string& reason)
+      : std::runtime_error(key + ": " + reason), key_(key) {}
+  const std::string& key() const { return key_; }
+
+ private:
+  std::string key_;
+};
+
+// Parses a file; a missing or malformed file is a ConfigError naming the file.
+YAML::Node loadYamlFile(const std::string& path);
+
+// A view of one mapping in the document, remembering its dotted path for messages.
+class ConfigReader {
+ public:
+  ConfigReader(YAML::Node node, std::string path);
+
+  bool has(const std::string& key) const;
+  // The sub-mapping `key`; an absent key gives an empty reader (all defaults kept).
+  ConfigReader child(const std::string& key) const;
+  // Rejects keys not in `allowed` (typos otherwise pass silently as "default kept").
+  void allowOnly(std::initializer_list<const char*> allowed) const;
+
+  // Each read leaves `out` untouched when the key is absent.
+  void read(const std::string& key, double& out) const;
+  void read(const std::string& key, int& out) const;
+  void read(const std::string& key, bool& out) const;
+  void read(const std::string& key, std::string& out) const;
+  template <int N>
+  void read(const std::string& key, Eigen::Matrix<double, N, 1>& out) const {
+    readVector(key, out.data(), N);
+  }
+
+  const std::string& path() const { return path_; }
+  std::string keyPath(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+
+ private:
+  void readVector(const std::string& key, double* out, int size) const;
+  YAML::Node node_;
+  std::string path_;
+};
+
+}  // namespace sdlqr

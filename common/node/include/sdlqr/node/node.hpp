@@ -1,0 +1,152 @@
+#pragma once
+// The LCM side of every process: one bus connection, vehicle-prefixed channels, decoding with
+// reject counting, sequence-gap (drop) counting, queue capacity 1 for state and command
+// channels, HEARTBEAT once a second of wall time, and a stop flag set by SIGINT/SIGTERM.
+// Algorithm code never sees this header; mains hand plain structs (common/messages.hpp) on.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sdlqr/common/channels.hpp"
+#include "sdlqr/common/cli.hpp"
+
+namespace sdlqr::node {
+
+enum class ProcessState : int8_t { kStarting = 0, kRunning = 1, kDegraded = 2, kFailsafe = 3, kStopping = 4 };
+
+// Named counters reported in HEARTBEAT; registered once at start so counting never allocates.
+class Counters {
+ public:
+  using Id = int;
+  Id add(const std::string& name);
+  void increment(Id id, int64_t by = 1) { values_[static_cast<size_t>(id)] += by; }
+  int64_t value(Id id) const { return values_[static_cast<size_t>(id)]; }
+  const std::vector<std::string>& names() const { return names_; }
+  const std::vector<int64_t>& values() const { return values_; }
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<int64_t> values_;
+};
+
+class Node {
+ public:
+  Node(std::string process, const ProcessOptions& options);
+  ~Node();
+  Node(const Node&) = delete;
+  Node& operator=(const Node&) = delete;
+
+  std::string channel(std::string_view base) const { return channel::name(vehicle_, base); }
+  lcm::LCM& lcm() { return *lcm_; }
+
+  // Decodes each message of `base` as T and calls handler(msg). A message that fails to decode
+  // is counted as rejected ("reject.decode") and never reaches the handler. Gaps in `seq` count
+  // as dropped. queue_capacity 1 keeps only the newest message for control channels.
+  template <class T>
+  void subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity = 1);
+
+  // Encodes and publishes on the vehicle-prefixed channel.
+  template <class T>
+  void publish(std::string_view base, const T& msg);
+
+  // Handles messages for up to timeout_ms and publishes HEARTBEAT when one is due.
+  // Returns false once SIGINT or SIGTERM has been received.
+  bool spin(int timeout_ms);
+  bool running() const;
+  // For a main that ends itself (e.g. a duration elapsed): publishes a last STOPPING heartbeat.
+  void shutdown();
+
+  // Heartbeat contents.
+  void setState(ProcessState state) { state_ = state; }
+  ProcessState state() const { return state_; }
+  void setSimTime(int64_t utime) { sim_utime_ = utime; }
+  void setLastError(const std::string& text) { last_error_ = text; }
+  Counters& counters() { return counters_; }
+  void countRejected(Counters::Id reason) {
+    ++rejected_;
+    counters_.increment(reason);
+  }
+  void countError() { ++errors_; }
+  void countDeadlineMiss() { ++deadline_misses_; }
+  int64_t received() const { return received_; }
+  int64_t rejected() const { return rejected_; }
+  int64_t dropped() const { return dropped_; }
+  const std::string& process() const { return process_; }
+
+  void publishHeartbeat();
+
+ private:
+  struct SubscriptionBase {
+    virtual ~SubscriptionBase() = default;
+    virtual void onMessage(const lcm::ReceiveBuffer* rbuf) = 0;
+    Node* node = nullptr;
+    int64_t last_seq = -1;
+  };
+  template <class T>
+  struct TypedSubscription : SubscriptionBase {
+    std::function<void(const T&)> handler;
+    T message;
+    void onMessage(const lcm::ReceiveBuffer* rbuf) override {
+      ++node->received_;
+      if (message.decode(rbuf->data, 0, rbuf->data_size) < 0) {
+        node->countRejected(node->reject_decode_);
+        return;
+      }
+      node->noteSequence(*this, message.seq);
+      handler(message);
+    }
+  };
+  static void dispatch(const lcm::ReceiveBuffer* rbuf, const std::string& channel, SubscriptionBase* sub);
+  void noteSequence(SubscriptionBase& sub, int64_t seq);
+  void addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity);
+  void publishRaw(const std::string& channel, const void* data, int size);
+
+  std::string process_;
+  std::string vehicle_;
+  std::unique_ptr<lcm::LCM> lcm_;
+  std::vector<std::unique_ptr<SubscriptionBase>> subscriptions_;
+  std::vector<uint8_t> encode_buffer_;
+  Counters counters_;
+  Counters::Id reject_decode_;
+  ProcessState state_ = ProcessState::kStarting;
+  int64_t sim_utime_ = 0;
+  int64_t received_ = 0;
+  int64_t published_ = 0;
+  int64_t dropped_ = 0;
+  int64_t rejected_ = 0;
+  int64_t deadline_misses_ = 0;
+  int64_t errors_ = 0;
+  int64_t heartbeat_seq_ = 0;
+  std::string last_error_;
+  std::chrono::steady_clock::time_point next_heartbeat_;
+  std::chrono::steady_clock::time_point cpu_window_start_;
+  double cpu_seconds_at_window_start_ = 0.0;
+};
+
+template <class T>
+void Node::subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity) {
+  auto sub = std::make_unique<TypedSubscription<T>>();
+  sub->handler = std::move(handler);
+  addSubscription(channel(base), std::move(sub), queue_capacity);
+}
+
+template <class T>
+void Node::publish(std::string_view base, const T& msg) {
+  const int size = msg.getEncodedSize();
+  if (static_cast<int>(encode_buffer_.size()) < size) encode_buffer_.resize(static_cast<size_t>(size));
+  if (msg.encode(encode_buffer_.data(), 0, size) < 0) {
+    countError();
+    setLastError("encode failed on " + std::string(base));
+    return;
+  }
+  publishRaw(channel(base), encode_buffer_.data(), size);
+}
+
+}  // namespace sdlqr::node
