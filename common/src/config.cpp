@@ -76,6 +76,17 @@ void ConfigReader::read(const std::string& key, int& out) const {
   }
 }
 
+void ConfigReader::read(const std::string& key, long long& out) const {
+  if (!has(key)) return;
+  const YAML::Node node = node_[key];
+  try {
+    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
+    out = node.as<long long>();
+  } catch (const YAML::Exception&) {
+    throw ConfigError(keyPath(key), "expected an integer");
+  }
+}
+
 void ConfigReader::read(const std::string& key, bool& out) const {
   if (!has(key)) return;
   const YAML::Node node = node_[key];

@@ -40,6 +40,7 @@ class ConfigReader {
   // Each read leaves `out` untouched when the key is absent.
   void read(const std::string& key, double& out) const;
   void read(const std::string& key, int& out) const;
+  void read(const std::string& key, long long& out) const;
   void read(const std::string& key, bool& out) const;
   void read(const std::string& key, std::string& out) const;
   template <int N>
