@@ -21,6 +21,13 @@ YAML::Node loadYamlFile(const std::string& path) {
   }
 }
 
+ConfigReader loadVehicleConfig(const std::string& path) {
+  if (path.empty()) return ConfigReader(YAML::Node(YAML::NodeType::Map), "");
+  ConfigReader root(loadYamlFile(path), "");
+  root.allowOnly({"vehicle", "lqr", "sim", "estimator", "lowlevel", "controller", "gains", "logger", "mission"});
+  return root;
+}
+
 ConfigReader::ConfigReader(YAML::Node node, std::string path) : node_(std::move(node)), path_(std::move(path)) {
   if (node_ && !node_.IsNull() && !node_.IsMap()) throw ConfigError(path_.empty() ? "<root>" : path_, "must be a mapping");
 }

@@ -26,6 +26,12 @@ class ConfigError : public std::runtime_error {
 // Parses a file; a missing or malformed file is a ConfigError naming the file.
 YAML::Node loadYamlFile(const std::string& path);
 
+class ConfigReader;
+
+// The vehicle file of every process (config/*.yaml): an empty path gives built-in defaults; a
+// top-level section not in the known list is an error (a typo would otherwise be ignored).
+ConfigReader loadVehicleConfig(const std::string& path);
+
 // A view of one mapping in the document, remembering its dotted path for messages.
 class ConfigReader {
  public:
