@@ -5,6 +5,8 @@
 
 #include <Eigen/LU>
 
+#include "small_kernels.hpp"
+
 namespace sdlqr {
 
 namespace {
@@ -92,16 +94,175 @@ SquareMatrix<N> expm(const SquareMatrix<N>& M) {
   return result;
 }
 
+namespace {
+
+using namespace sda_detail;
+
+// The ZOH exponential exploits the shape of M = [[F, Gamma], [0, 0]] (F = A dt, Gamma = B dt):
+// every power is [[F^j, F^(j-1) Gamma], [0, 0]], so only the NX top rows are stored (T(M^j) below)
+// and T(M^(a+b)) = F^a T(M^b) is an NX x NX by NX x (NX+NU) product. The Padé quotient is block
+// triangular with [[D, -U_Gamma], [0, b0 I]] as denominator (D = V_F - U_F): its top rows are
+// D^-1 [V_F + U_F | 2 U_Gamma] and its bottom rows [0 | I]. Squaring keeps the form:
+// [E | Phi] -> E [E | Phi] + [0 | Phi].
+template <int NX, int NU>
+struct ZohKernel {
+  static constexpr int NP = NX + NU;
+  static constexpr int SP = padded(NP);
+  static constexpr int SG = padded(NX) + SP;  // [D | rhs] for the Gauss-Jordan solve
+  using Top = Block<NX, NP, SP>;
+
+  // out = first NX columns of `left` (an F power) times `right`.
+  static SDLQR_SDA_INLINE void product(const Top& left, const Top& right, Top& out) {
+    multiply<NX, SP, false, false, SP, SP, SP>(left.v, right.v, out.v);
+  }
+  static SDLQR_SDA_INLINE void axpy(double a, const Top& x, Top& y) {
+    for (int i = 0; i < NX * SP; ++i) y.v[i] += a * x.v[i];
+  }
+  static SDLQR_SDA_INLINE void scaled(double a, const Top& x, Top& y) {
+    for (int i = 0; i < NX * SP; ++i) y.v[i] = a * x.v[i];
+  }
+
+  // Fills `result` with the top rows of exp(M), M given by its top rows; false on a singular D.
+  static SDLQR_SDA_INLINE bool run(const Top& m_top, double norm, Top& result) {
+    int degree = 13, squarings = 0;
+    if (norm <= kTheta3) degree = 3;
+    else if (norm <= kTheta5) degree = 5;
+    else if (norm <= kTheta7) degree = 7;
+    else if (norm <= kTheta9) degree = 9;
+    else if (norm > kTheta13) squarings = static_cast<int>(std::ceil(std::log2(norm / kTheta13)));
+
+    Top M1;
+    scaled(std::ldexp(1.0, -squarings), m_top, M1);
+    Top M2, M4, M6, M8, odd_rest, U, V;
+    product(M1, M1, M2);
+    for (int i = 0; i < NX * SP; ++i) odd_rest.v[i] = V.v[i] = 0.0;
+    if (degree < 13) {
+      static constexpr double b3[] = {120.0, 60.0, 12.0, 1.0};
+      static constexpr double b5[] = {30240.0, 15120.0, 3360.0, 420.0, 30.0, 1.0};
+      static constexpr double b7[] = {17297280.0, 8648640.0, 1995840.0, 277200.0, 25200.0, 1512.0, 56.0, 1.0};
+      static constexpr double b9[] = {17643225600.0, 8821612800.0, 2075673600.0, 302702400.0, 30270240.0,
+                                      2162160.0,     110880.0,     3960.0,       90.0,        1.0};
+      const double* b = degree == 3 ? b3 : degree == 5 ? b5 : degree == 7 ? b7 : b9;
+      axpy(b[3], M2, odd_rest);
+      axpy(b[2], M2, V);
+      if (degree >= 5) {
+        product(M2, M2, M4);
+        axpy(b[5], M4, odd_rest);
+        axpy(b[4], M4, V);
+      }
+      if (degree >= 7) {
+        product(M4, M2, M6);
+        axpy(b[7], M6, odd_rest);
+        axpy(b[6], M6, V);
+      }
+      if (degree >= 9) {
+        product(M6, M2, M8);
+        axpy(b[9], M8, odd_rest);
+        axpy(b[8], M8, V);
+      }
+      finish(M1, odd_rest, b[1], b[0], V, U);
+    } else {
+      static constexpr double b[] = {64764752532480000.0, 32382376266240000.0, 7771770303897600.0,
+                                     1187353796428800.0,  129060195264000.0,   10559470521600.0,
+                                     670442572800.0,      33522128640.0,       1323241920.0,
+                                     40840800.0,          960960.0,            16380.0,
+                                     182.0,               1.0};
+      product(M2, M2, M4);
+      product(M4, M2, M6);
+      Top inner;
+      scaled(b[13], M6, inner);
+      axpy(b[11], M4, inner);
+      axpy(b[9], M2, inner);
+      product(M6, inner, odd_rest);
+      axpy(b[7], M6, odd_rest);
+      axpy(b[5], M4, odd_rest);
+      axpy(b[3], M2, odd_rest);
+      scaled(b[12], M6, inner);
+      axpy(b[10], M4, inner);
+      axpy(b[8], M2, inner);
+      product(M6, inner, V);
+      axpy(b[6], M6, V);
+      axpy(b[4], M4, V);
+      axpy(b[2], M2, V);
+      finish(M1, odd_rest, b[1], b[0], V, U);
+    }
+
+    // [D | V_F + U_F | 2 U_Gamma] with D = V_F - U_F, then Gauss-Jordan.
+    constexpr int S = padded(NX);
+    Block<NX, SG, SG> system;
+    for (int i = 0; i < NX; ++i) {
+      for (int j = 0; j < S; ++j) system(i, j) = j < NX ? V(i, j) - U(i, j) : 0.0;
+      for (int j = 0; j < SP; ++j) {
+        system(i, S + j) = j < NX ? V(i, j) + U(i, j) : j < NP ? 2.0 * U(i, j) : 0.0;
+      }
+    }
+    if (!gaussJordan<NX, S, SG>(system.v)) return false;
+    for (int i = 0; i < NX; ++i) {
+      for (int j = 0; j < SP; ++j) result(i, j) = system(i, S + j);
+    }
+    for (int k = 0; k < squarings; ++k) {
+      Top squared;
+      product(result, result, squared);
+      for (int i = 0; i < NX; ++i) {
+        for (int j = NX; j < NP; ++j) squared(i, j) += result(i, j);
+      }
+      result = squared;
+    }
+    return true;
+  }
+
+  // U = b1 T(M) + F odd_rest; V gets b0 [I | 0] added.
+  static SDLQR_SDA_INLINE void finish(const Top& M1, const Top& odd_rest, double b1, double b0, Top& V, Top& U) {
+    product(M1, odd_rest, U);
+    axpy(b1, M1, U);
+    for (int i = 0; i < NX; ++i) V(i, i) += b0;
+  }
+};
+
+template <int NX, int NU>
+__attribute__((target("avx2,fma"))) bool zohExponentialAvx2(const Block<NX, NX + NU, padded(NX + NU)>& m_top,
+                                                              double norm, Block<NX, NX + NU, padded(NX + NU)>& out) {
+  return ZohKernel<NX, NU>::run(m_top, norm, out);
+}
+
+template <int NX, int NU>
+bool zohExponentialBaseline(const Block<NX, NX + NU, padded(NX + NU)>& m_top, double norm,
+                            Block<NX, NX + NU, padded(NX + NU)>& out) {
+  return ZohKernel<NX, NU>::run(m_top, norm, out);
+}
+
+}  // namespace
+
 template <int NX, int NU>
 DiscreteSystem<NX, NU> discretizeZoh(const Eigen::Matrix<double, NX, NX>& A, const Eigen::Matrix<double, NX, NU>& B,
                                      double dt) {
-  SquareMatrix<NX + NU> augmented = SquareMatrix<NX + NU>::Zero();
-  augmented.template topLeftCorner<NX, NX>() = A * dt;
-  augmented.template topRightCorner<NX, NU>() = B * dt;
-  const SquareMatrix<NX + NU> exponential = expm<NX + NU>(augmented);
+  using Top = typename ZohKernel<NX, NU>::Top;
+  constexpr int NP = NX + NU;
+  Top m_top, result;
+  double column_sums[NP] = {};
+  for (int i = 0; i < NX; ++i) {
+    for (int j = 0; j < ZohKernel<NX, NU>::SP; ++j) {
+      const double value = j < NX ? A(i, j) * dt : j < NP ? B(i, j - NX) * dt : 0.0;
+      m_top(i, j) = value;
+      if (j < NP) column_sums[j] += std::fabs(value);
+    }
+  }
+  double norm = 0.0;
+  for (int j = 0; j < NP; ++j) norm = std::fmax(norm, column_sums[j]);
+  if (!std::isfinite(norm) || !std::isfinite(dt)) norm = std::numeric_limits<double>::quiet_NaN();
+
   DiscreteSystem<NX, NU> discrete;
-  discrete.A = exponential.template topLeftCorner<NX, NX>();
-  discrete.B = exponential.template topRightCorner<NX, NU>();
+  const bool ok = std::isfinite(norm) && (cpuHasAvx2Fma() ? zohExponentialAvx2<NX, NU>(m_top, norm, result)
+                                                          : zohExponentialBaseline<NX, NU>(m_top, norm, result));
+  if (!ok) {
+    discrete.A.setConstant(std::numeric_limits<double>::quiet_NaN());
+    discrete.B.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return discrete;
+  }
+  for (int i = 0; i < NX; ++i) {
+    for (int j = 0; j < NX; ++j) discrete.A(i, j) = result(i, j);
+    for (int j = 0; j < NU; ++j) discrete.B(i, j) = result(i, NX + j);
+  }
   return discrete;
 }
 

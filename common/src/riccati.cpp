@@ -6,6 +6,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
+#include "small_kernels.hpp"
+
 namespace sdlqr {
 
 namespace {
@@ -36,44 +38,27 @@ DareSolution<N, M> solveDareDoubling(const Mat<N, N>& A, const Mat<N, M>& B, con
 
   // G_0 = B R^-1 B^T = F^T F with F = L^-1 B^T.
   const Mat<M, N> F = r_factor.matrixL().solve(B.transpose());
-  Mat<N, N> Ak = A;
-  Mat<N, N> Gk = F.transpose() * F;
-  Mat<N, N> Hk = Q;
-  symmetrize<N>(Hk);
+  const Mat<N, N> G0 = F.transpose() * F;
 
-  double previous_change = std::numeric_limits<double>::infinity();
-  for (int k = 1; k <= max_doublings; ++k) {
-    const Mat<N, N> W = Mat<N, N>::Identity() + Gk * Hk;
-    const Eigen::PartialPivLU<Mat<N, N>> w_factor(W);
-    const Mat<N, N> WinvA = w_factor.solve(Ak);
-    const Mat<N, N> WinvG = w_factor.solve(Gk);
-    Mat<N, N> H_next = Hk + Ak.transpose() * (Hk * WinvA);
-    Mat<N, N> G_next = Gk + Ak * WinvG * Ak.transpose();
-    const Mat<N, N> A_next = Ak * WinvA;
-    symmetrize<N>(H_next);
-    symmetrize<N>(G_next);
-
-    const double change = (H_next - Hk).norm() / H_next.norm();
-    Ak = A_next;
-    Gk = G_next;
-    Hk = H_next;
-    solution.doublings = k;
-    solution.last_change = change;
-    if (!std::isfinite(change) || !Hk.allFinite()) {
-      solution.status = SolveStatus::kNumericalFailure;
-      return solution;
+  sda_detail::Block<N, N> Ak{}, Gk{}, Hk{};
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < N; ++j) {
+      Ak(i, j) = A(i, j);
+      Gk(i, j) = 0.5 * (G0(i, j) + G0(j, i));
+      Hk(i, j) = 0.5 * (Q(i, j) + Q(j, i));
     }
-    const bool quadratic = k >= 2 && change < 1e-3 && change < previous_change;
-    const double predicted_next = change * change * change / (previous_change * previous_change);
-    if (change <= tolerance || (quadratic && predicted_next <= tolerance)) {
-      solution.X = Hk;
-      solution.status = SolveStatus::kOk;
-      return solution;
-    }
-    previous_change = change;
   }
-  solution.X = Hk;
-  solution.status = SolveStatus::kNotConverged;
+  const sda_detail::DoublingOutcome outcome = sda_detail::doublingLoop<N>(Ak, Gk, Hk, tolerance, max_doublings);
+  solution.doublings = outcome.doublings;
+  solution.last_change = outcome.last_change;
+  if (!outcome.finite) {
+    solution.status = SolveStatus::kNumericalFailure;
+    return solution;
+  }
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < N; ++j) solution.X(i, j) = Hk(i, j);
+  }
+  solution.status = outcome.converged ? SolveStatus::kOk : SolveStatus::kNotConverged;
   return solution;
 }
 
