@@ -64,6 +64,20 @@ Node::~Node() = default;
 
 void Node::dispatch(const lcm::ReceiveBuffer* rbuf, const std::string&, SubscriptionBase* sub) { sub->onMessage(rbuf); }
 
+void Node::dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub) {
+  ++sub->node->received_;
+  sub->handler(channel, rbuf->data, rbuf->data_size, rbuf->recv_utime);
+}
+
+void Node::subscribeRaw(const std::string& pattern, RawHandler handler, int queue_capacity) {
+  auto sub = std::make_unique<RawSubscription>();
+  sub->node = this;
+  sub->handler = std::move(handler);
+  lcm::Subscription* handle = lcm_->subscribeFunction(pattern, &Node::dispatchRaw, sub.get());
+  if (queue_capacity > 0) handle->setQueueCapacity(queue_capacity);
+  raw_subscriptions_.push_back(std::move(sub));
+}
+
 void Node::addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity) {
   sub->node = this;
   // The channel is used as an exact name: escape regex characters LCM would interpret.

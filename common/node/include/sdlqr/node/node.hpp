@@ -52,6 +52,13 @@ class Node {
   template <class T>
   void subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity = 1);
 
+  // Undecoded messages of every channel whose full name matches the LCM regex `pattern` (no
+  // vehicle prefix is added): for recorders. Counted as received; `receive_utime` is LCM's
+  // wall-clock receive time [us].
+  using RawHandler =
+      std::function<void(const std::string& channel, const void* data, uint32_t size, int64_t receive_utime)>;
+  void subscribeRaw(const std::string& pattern, RawHandler handler, int queue_capacity);
+
   // Encodes and publishes on the vehicle-prefixed channel.
   template <class T>
   void publish(std::string_view base, const T& msg);
@@ -75,6 +82,8 @@ class Node {
   }
   void countError() { ++errors_; }
   void countDeadlineMiss() { ++deadline_misses_; }
+  // Messages lost by the process itself (e.g. a recorder's queue overflow), for HEARTBEAT dropped.
+  void countDropped(int64_t count) { dropped_ += count; }
   int64_t received() const { return received_; }
   int64_t rejected() const { return rejected_; }
   int64_t dropped() const { return dropped_; }
@@ -103,7 +112,12 @@ class Node {
       handler(message);
     }
   };
+  struct RawSubscription {
+    Node* node = nullptr;
+    RawHandler handler;
+  };
   static void dispatch(const lcm::ReceiveBuffer* rbuf, const std::string& channel, SubscriptionBase* sub);
+  static void dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub);
   void noteSequence(SubscriptionBase& sub, int64_t seq);
   void addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity);
   void publishRaw(const std::string& channel, const void* data, int size);
@@ -112,6 +126,7 @@ class Node {
   std::string vehicle_;
   std::unique_ptr<lcm::LCM> lcm_;
   std::vector<std::unique_ptr<SubscriptionBase>> subscriptions_;
+  std::vector<std::unique_ptr<RawSubscription>> raw_subscriptions_;
   std::vector<uint8_t> encode_buffer_;
   Counters counters_;
   Counters::Id reject_decode_;

@@ -1,0 +1,102 @@
+#include "sdlqr/logger/flight_log.hpp"
+
+#include <unordered_map>
+
+#include "lcm_decode.hpp"
+#include "sdlqr/common/channels.hpp"
+#include "sdlqr/logger/channel_types.hpp"
+#include "sdlqr/logger/log_reader.hpp"
+#include "sdlqr/node/convert.hpp"
+
+namespace sdlqr::logger {
+
+namespace {
+
+template <class LcmType>
+auto toPlain(const LcmType& m) {
+  return node::fromLcm(m);
+}
+HeartbeatRecord toPlain(const heartbeat_t& m) { return detail::toHeartbeatRecord(m); }
+
+template <class LcmType, class Plain>
+void decodeInto(const LogEvent& event, Series<Plain>& series, ChannelTimeline& timeline) {
+  LcmType message;
+  if (!detail::decodeEvent(event, &message)) {
+    ++series.decode_failures;
+    ++timeline.decode_failures;
+    return;
+  }
+  series.messages.push_back(toPlain(message));
+  series.receive_utime.push_back(event.receive_utime);
+  timeline.addDecoded(event.receive_utime, message.utime, message.seq);
+}
+
+void decode(MessageType type, const LogEvent& e, FlightLog& log, ChannelTimeline& t) {
+  switch (type) {
+    case MessageType::kImu: decodeInto<imu_t>(e, log.imu, t); break;
+    case MessageType::kVioPose: decodeInto<vio_pose_t>(e, log.vio_pose, t); break;
+    case MessageType::kStateEstimate: decodeInto<state_estimate_t>(e, log.state_estimate, t); break;
+    case MessageType::kRateCommand: decodeInto<rate_cmd_t>(e, log.rate_command, t); break;
+    case MessageType::kMotorCommand: decodeInto<motor_cmd_t>(e, log.motor_command, t); break;
+    case MessageType::kGains: decodeInto<gains_t>(e, log.gains, t); break;
+    case MessageType::kReference: decodeInto<reference_t>(e, log.reference, t); break;
+    case MessageType::kTrajectory: decodeInto<trajectory_t>(e, log.trajectory, t); break;
+    case MessageType::kDisturbance: decodeInto<disturbance_t>(e, log.disturbance, t); break;
+    case MessageType::kParams: decodeInto<params_t>(e, log.params, t); break;
+    case MessageType::kCommand: decodeInto<command_t>(e, log.command, t); break;
+    case MessageType::kHeartbeat: decodeInto<heartbeat_t>(e, log.heartbeat, t); break;
+    case MessageType::kSimTruth: decodeInto<sim_truth_t>(e, log.sim_truth, t); break;
+  }
+}
+
+}  // namespace
+
+FlightLog FlightLog::load(const std::string& path, const std::string& vehicle) {
+  FlightLog log;
+  log.vehicle = vehicle;
+  LogReader reader(path);
+  std::unordered_map<std::string, size_t> index;
+  LogEvent event;
+  while (reader.next(&event)) {
+    const std::string name(event.channel);
+    auto [it, inserted] = index.try_emplace(name, log.channels.size());
+    const ChannelName split = splitChannel(name);
+    const ChannelType* type = findChannelType(split.base);
+    if (inserted) {
+      ChannelTimeline timeline;
+      timeline.channel = name;
+      if (type) timeline.lcm_type = std::string(type->lcm_type);
+      log.channels.push_back(std::move(timeline));
+    }
+    ChannelTimeline& timeline = log.channels[it->second];
+    timeline.addEvent(event.receive_utime, event.size);
+    if (type && split.vehicle == vehicle) decode(type->type, event, log, timeline);
+  }
+  log.file = reader.status();
+  if (log.file.events == 0) {
+    throw LogError("'" + path + "' holds no LCM event" +
+                   std::string(log.file.file_bytes == 0 ? " (empty file)" : " (not an LCM event log?)"));
+  }
+  return log;
+}
+
+const ChannelTimeline* FlightLog::channel(std::string_view name) const {
+  for (const ChannelTimeline& c : channels) {
+    if (c.channel == name) return &c;
+  }
+  return nullptr;
+}
+
+MetricsInput FlightLog::metricsInput() const {
+  MetricsInput input;
+  input.log = file;
+  input.channels = channels;
+  if (!gains.empty()) input.gains[channel::name(vehicle, channel::kGains)] = gains.messages;
+  if (!rate_command.empty()) input.rate_commands[channel::name(vehicle, channel::kRateCommand)] = rate_command.messages;
+  if (!heartbeat.empty()) {
+    input.heartbeats[channel::name(vehicle, channel::kHeartbeat)] = {heartbeat.messages, heartbeat.receive_utime};
+  }
+  return input;
+}
+
+}  // namespace sdlqr::logger

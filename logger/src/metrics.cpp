@@ -1,0 +1,400 @@
+#include "sdlqr/logger/metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "sdlqr/logger/json_writer.hpp"
+
+namespace sdlqr::logger {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kUsToMs = 1e-3;
+constexpr double kUsToS = 1e-6;
+
+Distribution intervalsMs(const std::vector<int64_t>& times) {
+  std::vector<double> intervals;
+  if (times.size() > 1) intervals.reserve(times.size() - 1);
+  for (size_t i = 1; i < times.size(); ++i) intervals.push_back(static_cast<double>(times[i] - times[i - 1]) * kUsToMs);
+  return describe(std::move(intervals));
+}
+
+double rateHz(size_t count, int64_t span_us) {
+  if (count < 2 || span_us <= 0) return kNaN;
+  return static_cast<double>(count - 1) / (static_cast<double>(span_us) * kUsToS);
+}
+
+const char* solveStatusName(SolveStatus status) {
+  switch (status) {
+    case SolveStatus::kOk: return "ok";
+    case SolveStatus::kNotConverged: return "not_converged";
+    case SolveStatus::kNumericalFailure: return "numerical_failure";
+    case SolveStatus::kInvalidInput: return "invalid_input";
+  }
+  return "unknown";
+}
+
+const char* methodName(GainsMethod method) {
+  switch (method) {
+    case GainsMethod::kTangent: return "tangent";
+    case GainsMethod::kIterative: return "iterative";
+  }
+  return "unknown";
+}
+
+const char* freshnessName(GainsFreshness freshness) {
+  switch (freshness) {
+    case GainsFreshness::kFresh: return "fresh";
+    case GainsFreshness::kStale: return "stale";
+    case GainsFreshness::kFallback: return "fallback";
+  }
+  return "unknown";
+}
+
+bool isHeartbeat(const ChannelTimeline& timeline) { return timeline.lcm_type == "heartbeat_t"; }
+
+PacingOrigin findOrigin(const std::vector<ChannelTimeline>& channels) {
+  PacingOrigin origin;
+  for (const ChannelTimeline& c : channels) {
+    if (isHeartbeat(c) || c.receive_utime.empty()) continue;
+    if (!origin.valid || c.receive_utime.front() < origin.receive_utime) {
+      origin.valid = true;
+      origin.channel = c.channel;
+      origin.receive_utime = c.receive_utime.front();
+      origin.utime = c.utime.front();
+    }
+  }
+  return origin;
+}
+
+void writeDistribution(JsonWriter& json, std::string_view name, const Distribution& d) {
+  json.key(name);
+  json.beginObject();
+  json.memberInt("count", d.count);
+  json.member("mean", d.mean);
+  json.member("min", d.min);
+  json.member("median", d.median);
+  json.member("p99", d.p99);
+  json.member("max", d.max);
+  json.endObject();
+}
+
+void writeCounts(JsonWriter& json, std::string_view name, const std::map<std::string, int64_t>& counts) {
+  json.key(name);
+  json.beginObject();
+  for (const auto& [key, value] : counts) json.memberInt(key, value);
+  json.endObject();
+}
+
+void writeChannel(JsonWriter& json, const ChannelMetrics& c) {
+  json.key(c.channel);
+  json.beginObject();
+  if (c.lcm_type.empty()) {
+    json.key("type");
+    json.null();
+  } else {
+    json.member("type", c.lcm_type);
+  }
+  json.memberInt("events", c.events);
+  json.memberInt("bytes", c.bytes);
+  json.memberInt("decoded", c.decoded);
+  json.memberInt("decode_failures", c.decode_failures);
+  json.key("receive");
+  json.beginObject();
+  json.member("first_s", c.first_receive_s);
+  json.member("last_s", c.last_receive_s);
+  json.member("rate_hz", c.receive_rate_hz);
+  writeDistribution(json, "interval_ms", c.receive_interval_ms);
+  json.endObject();
+  if (c.decoded > 0) {
+    json.key("sim");
+    json.beginObject();
+    json.memberInt("first_utime", c.first_utime);
+    json.memberInt("last_utime", c.last_utime);
+    json.member("duration_s", c.sim_duration_s);
+    json.member("rate_hz", c.sim_rate_hz);
+    writeDistribution(json, "interval_ms", c.sim_interval_ms);
+    json.memberInt("utime_not_increasing", c.utime_not_increasing);
+    json.endObject();
+    json.key("seq");
+    json.beginObject();
+    json.memberInt("first", c.first_seq);
+    json.memberInt("last", c.last_seq);
+    json.memberInt("lost", c.seq_lost);
+    json.memberInt("restarts", c.seq_restarts);
+    json.memberInt("repeats", c.seq_repeats);
+    json.endObject();
+  }
+  if (c.has_pacing) writeDistribution(json, "pacing_lag_ms", c.pacing_lag_ms);
+  json.endObject();
+}
+
+void writeHeartbeat(JsonWriter& json, const ProcessHeartbeatMetrics& p) {
+  json.key(p.process);
+  json.beginObject();
+  json.memberInt("heartbeats", p.heartbeats);
+  json.memberInt("distinct_pids", p.distinct_pids);
+  json.member("first_receive_s", p.first_receive_s);
+  json.member("last_receive_s", p.last_receive_s);
+  json.member("max_interval_s", p.max_interval_s);
+  json.key("last");
+  json.beginObject();
+  const HeartbeatRecord& h = p.last;
+  json.member("state", processStateName(h.state));
+  json.memberInt("utime", h.utime);
+  json.memberInt("seq", h.seq);
+  json.memberInt("pid", h.pid);
+  json.memberInt("received", h.received);
+  json.memberInt("published", h.published);
+  json.memberInt("dropped", h.dropped);
+  json.memberInt("rejected", h.rejected);
+  json.memberInt("deadline_misses", h.deadline_misses);
+  json.memberInt("errors", h.errors);
+  json.member("cpu_percent", h.cpu_percent);
+  json.key("counters");
+  json.beginObject();
+  for (const auto& [name, value] : h.counters) json.memberInt(name, value);
+  json.endObject();
+  json.member("last_error", h.last_error);
+  json.endObject();
+  json.endObject();
+}
+
+}  // namespace
+
+ChannelMetrics computeChannelMetrics(const ChannelTimeline& t, int64_t log_start_receive_utime,
+                                     const PacingOrigin& origin) {
+  ChannelMetrics m;
+  m.channel = t.channel;
+  m.lcm_type = t.lcm_type;
+  m.events = t.events;
+  m.bytes = t.bytes;
+  m.decoded = static_cast<int64_t>(t.utime.size());
+  m.decode_failures = t.decode_failures;
+  if (!t.event_receive_utime.empty()) {
+    m.first_receive_s = static_cast<double>(t.event_receive_utime.front() - log_start_receive_utime) * kUsToS;
+    m.last_receive_s = static_cast<double>(t.event_receive_utime.back() - log_start_receive_utime) * kUsToS;
+    m.receive_rate_hz =
+        rateHz(t.event_receive_utime.size(), t.event_receive_utime.back() - t.event_receive_utime.front());
+  } else {
+    m.receive_rate_hz = kNaN;
+  }
+  m.receive_interval_ms = intervalsMs(t.event_receive_utime);
+
+  m.sim_rate_hz = kNaN;
+  m.sim_interval_ms = intervalsMs(t.utime);
+  if (!t.utime.empty()) {
+    m.first_utime = t.utime.front();
+    m.last_utime = t.utime.back();
+    m.sim_duration_s = static_cast<double>(m.last_utime - m.first_utime) * kUsToS;
+    m.sim_rate_hz = rateHz(t.utime.size(), m.last_utime - m.first_utime);
+    m.first_seq = t.seq.front();
+    m.last_seq = t.seq.back();
+  }
+  for (size_t i = 1; i < t.utime.size(); ++i) {
+    if (t.utime[i] <= t.utime[i - 1]) ++m.utime_not_increasing;
+    const int64_t step = t.seq[i] - t.seq[i - 1];
+    if (step > 1) m.seq_lost += step - 1;
+    else if (step < 0) ++m.seq_restarts;
+    else if (step == 0) ++m.seq_repeats;
+  }
+
+  if (origin.valid && !isHeartbeat(t) && !t.utime.empty()) {
+    std::vector<double> lags;
+    lags.reserve(t.utime.size());
+    for (size_t i = 0; i < t.utime.size(); ++i) {
+      const int64_t lag_us = (t.receive_utime[i] - origin.receive_utime) - (t.utime[i] - origin.utime);
+      lags.push_back(static_cast<double>(lag_us) * kUsToMs);
+    }
+    m.has_pacing = true;
+    m.pacing_lag_ms = describe(std::move(lags));
+  }
+  return m;
+}
+
+GainsMetrics computeGainsMetrics(const std::vector<GainSet>& gains) {
+  GainsMetrics m;
+  m.count = static_cast<int64_t>(gains.size());
+  std::vector<double> solve_us;
+  std::vector<double> iterations;
+  std::vector<double> residual;
+  for (const GainSet& g : gains) {
+    solve_us.push_back(g.solve_us);
+    iterations.push_back(static_cast<double>(g.iterations));
+    residual.push_back(g.residual);
+    ++m.status[solveStatusName(g.status)];
+    ++m.method[methodName(g.method)];
+  }
+  m.solve_us = describe(std::move(solve_us));
+  m.iterations = describe(std::move(iterations));
+  m.residual = describe(std::move(residual));
+  return m;
+}
+
+RateCommandMetrics computeRateCommandMetrics(const std::vector<RateCommand>& commands, double nominal_period_s) {
+  RateCommandMetrics m;
+  m.count = static_cast<int64_t>(commands.size());
+  m.nominal_period_ms = nominal_period_s * 1e3;
+  std::vector<double> periods;
+  std::vector<double> jitter;
+  for (size_t i = 0; i < commands.size(); ++i) {
+    const RateCommand& c = commands[i];
+    if (c.saturated & 1) ++m.rate_saturated;
+    if (c.saturated & 2) ++m.thrust_saturated;
+    ++m.gains_status[freshnessName(c.gains_status)];
+    if (i == 0) continue;
+    const int64_t step_us = c.utime - commands[i - 1].utime;
+    if (step_us <= 0) {
+      ++m.utime_not_increasing;
+      continue;
+    }
+    const double period_ms = static_cast<double>(step_us) * kUsToMs;
+    periods.push_back(period_ms);
+    jitter.push_back(std::abs(period_ms - m.nominal_period_ms));
+  }
+  m.period_ms = describe(std::move(periods));
+  m.jitter_ms = describe(std::move(jitter));
+  return m;
+}
+
+std::vector<ProcessHeartbeatMetrics> computeHeartbeatMetrics(const HeartbeatSeries& series,
+                                                             int64_t log_start_receive_utime) {
+  std::map<std::string, ProcessHeartbeatMetrics> by_process;
+  std::map<std::string, std::set<int32_t>> pids;
+  std::map<std::string, int64_t> last_receive;
+  for (size_t i = 0; i < series.records.size(); ++i) {
+    const HeartbeatRecord& h = series.records[i];
+    const int64_t receive = series.receive_utime[i];
+    const double receive_s = static_cast<double>(receive - log_start_receive_utime) * kUsToS;
+    ProcessHeartbeatMetrics& p = by_process[h.process];
+    if (p.heartbeats == 0) {
+      p.process = h.process;
+      p.first_receive_s = receive_s;
+    } else {
+      p.max_interval_s = std::max(p.max_interval_s, static_cast<double>(receive - last_receive[h.process]) * kUsToS);
+    }
+    ++p.heartbeats;
+    p.last_receive_s = receive_s;
+    p.last = h;
+    last_receive[h.process] = receive;
+    pids[h.process].insert(h.pid);
+    p.distinct_pids = static_cast<int64_t>(pids[h.process].size());
+  }
+  std::vector<ProcessHeartbeatMetrics> out;
+  for (auto& [name, p] : by_process) out.push_back(std::move(p));
+  return out;
+}
+
+LogMetrics computeLogMetrics(const MetricsInput& input, const MetricsOptions& options) {
+  LogMetrics m;
+  m.log = input.log;
+  m.origin = findOrigin(input.channels);
+  const int64_t start = input.log.first_receive_utime;
+
+  std::vector<const ChannelTimeline*> sorted;
+  for (const ChannelTimeline& c : input.channels) sorted.push_back(&c);
+  std::sort(sorted.begin(), sorted.end(), [](auto* a, auto* b) { return a->channel < b->channel; });
+  const ChannelTimeline* clock = nullptr;
+  for (const ChannelTimeline* c : sorted) {
+    m.channels.push_back(computeChannelMetrics(*c, start, m.origin));
+    if (!isHeartbeat(*c) && c->utime.size() >= 2 && (!clock || c->utime.size() > clock->utime.size())) clock = c;
+  }
+  m.real_time_factor = kNaN;
+  if (clock) {
+    m.clock_channel = clock->channel;
+    const int64_t receive_span = clock->receive_utime.back() - clock->receive_utime.front();
+    if (receive_span > 0) {
+      m.real_time_factor = static_cast<double>(clock->utime.back() - clock->utime.front()) / static_cast<double>(receive_span);
+    }
+  }
+  for (const auto& [channel, gains] : input.gains) m.gains[channel] = computeGainsMetrics(gains);
+  for (const auto& [channel, commands] : input.rate_commands) {
+    m.rate_commands[channel] = computeRateCommandMetrics(commands, options.rate_command_period_s);
+  }
+  for (const auto& [channel, series] : input.heartbeats) m.heartbeats[channel] = computeHeartbeatMetrics(series, start);
+  return m;
+}
+
+void writeMetricsJson(std::ostream& out, const LogMetrics& m) {
+  JsonWriter json(out);
+  json.beginObject();
+
+  json.key("log");
+  json.beginObject();
+  json.member("path", m.log.path);
+  json.memberInt("file_bytes", m.log.file_bytes);
+  json.memberInt("events", m.log.events);
+  json.memberBool("complete", m.log.complete());
+  json.memberInt("readable_bytes", m.log.readable_bytes);
+  json.memberInt("skipped_bytes", m.log.skipped_bytes);
+  json.memberInt("truncated_tail_bytes", m.log.truncated_tail_bytes);
+  json.memberInt("first_receive_utime", m.log.first_receive_utime);
+  json.memberInt("last_receive_utime", m.log.last_receive_utime);
+  json.member("receive_duration_s", static_cast<double>(m.log.last_receive_utime - m.log.first_receive_utime) * kUsToS);
+  json.endObject();
+
+  json.key("pacing");
+  json.beginObject();
+  if (m.origin.valid) {
+    json.member("origin_channel", m.origin.channel);
+    json.memberInt("origin_receive_utime", m.origin.receive_utime);
+    json.memberInt("origin_utime", m.origin.utime);
+  }
+  if (!m.clock_channel.empty()) json.member("clock_channel", m.clock_channel);
+  json.member("real_time_factor", m.real_time_factor);
+  json.endObject();
+
+  json.key("channels");
+  json.beginObject();
+  for (const ChannelMetrics& c : m.channels) writeChannel(json, c);
+  json.endObject();
+
+  json.key("gains");
+  json.beginObject();
+  for (const auto& [channel, g] : m.gains) {
+    json.key(channel);
+    json.beginObject();
+    json.memberInt("count", g.count);
+    writeDistribution(json, "solve_us", g.solve_us);
+    writeDistribution(json, "iterations", g.iterations);
+    writeDistribution(json, "residual", g.residual);
+    writeCounts(json, "status", g.status);
+    writeCounts(json, "method", g.method);
+    json.endObject();
+  }
+  json.endObject();
+
+  json.key("rate_cmd");
+  json.beginObject();
+  for (const auto& [channel, r] : m.rate_commands) {
+    json.key(channel);
+    json.beginObject();
+    json.memberInt("count", r.count);
+    json.member("nominal_period_ms", r.nominal_period_ms);
+    writeDistribution(json, "period_ms", r.period_ms);
+    writeDistribution(json, "jitter_ms", r.jitter_ms);
+    json.memberInt("utime_not_increasing", r.utime_not_increasing);
+    json.memberInt("rate_saturated", r.rate_saturated);
+    json.memberInt("thrust_saturated", r.thrust_saturated);
+    writeCounts(json, "gains_status", r.gains_status);
+    json.endObject();
+  }
+  json.endObject();
+
+  json.key("heartbeat");
+  json.beginObject();
+  for (const auto& [channel, processes] : m.heartbeats) {
+    json.key(channel);
+    json.beginObject();
+    for (const ProcessHeartbeatMetrics& p : processes) writeHeartbeat(json, p);
+    json.endObject();
+  }
+  json.endObject();
+
+  json.endObject();
+}
+
+}  // namespace sdlqr::logger
