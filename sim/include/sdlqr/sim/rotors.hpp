@@ -1,0 +1,55 @@
+#pragma once
+// The four rotors: per-rotor saturation of the setpoints, first-order motor lag, and the wrench
+// the produced thrusts exert on the airframe (collective thrust, roll/pitch/yaw torques through
+// VehicleParams::effectiveness(), and linear rotor drag).
+
+#include "sdlqr/common/messages.hpp"
+#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/sim/rigid_body.hpp"
+
+namespace sdlqr::sim {
+
+// Setpoints the ESCs would realize: disarmed means zero thrust, armed means clamped to
+// [min_rotor_thrust, max_rotor_thrust] per rotor. Non-finite entries must be rejected earlier.
+Vec4 saturatedSetpoint(const MotorCommand& command, const VehicleParams& vehicle);
+
+// First-order lag from setpoint to thrust, solved exactly for a setpoint held over the step:
+// T(tau) = T_sp + (T_0 - T_sp) exp(-tau / time_constant).
+class MotorLag {
+ public:
+  explicit MotorLag(double time_constant) : time_constant_(time_constant) {}
+
+  void setSetpoint(const Vec4& setpoint) { setpoint_ = setpoint; }
+  const Vec4& setpoint() const { return setpoint_; }
+  // Thrust tau seconds after the current step started.
+  Vec4 thrustAt(double tau) const;
+  // Moves the lag state dt seconds on.
+  void advance(double dt) { thrust_ = thrustAt(dt); }
+  const Vec4& thrust() const { return thrust_; }
+  // Forces the lag state (a vehicle dropped into the air already hovering).
+  void setThrust(const Vec4& thrust) { thrust_ = thrust; }
+
+ private:
+  double time_constant_;
+  Vec4 setpoint_ = Vec4::Zero();
+  Vec4 thrust_ = Vec4::Zero();
+};
+
+// The airframe's response to rotor thrusts, precomputed from VehicleParams.
+class RotorWrench {
+ public:
+  RotorWrench(const VehicleParams& vehicle, double gravity);
+
+  // Wrench of the given per-rotor thrusts [N] on a body in state s. Rotor drag is induced by the
+  // spinning rotors: it grows with rotor speed (~ sqrt(thrust)) and equals the configured
+  // mass-normalized coefficients at hover thrust, vanishing when the rotors stop.
+  Wrench operator()(const Vec4& thrust, const BodyState& s) const;
+
+ private:
+  Mat44 effectiveness_;
+  Vec3 rotor_drag_;
+  double mass_;
+  double hover_thrust_per_rotor_;
+};
+
+}  // namespace sdlqr::sim

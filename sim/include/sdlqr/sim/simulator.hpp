@@ -1,0 +1,86 @@
+#pragma once
+// The plant: rigid body + rotors + battery + ground + disturbances + sensors, advanced one RK4
+// physics step per call. It owns the simulation clock (utime = steps x period) and tells the
+// caller which sensor messages are due at each step. Pure: no clock, no I/O, no allocation in
+// step(); the same seed and the same inputs give the same flight bit for bit.
+
+#include <cstdint>
+#include <optional>
+
+#include "sdlqr/common/messages.hpp"
+#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/sim/battery.hpp"
+#include "sdlqr/sim/disturbances.hpp"
+#include "sdlqr/sim/imu_model.hpp"
+#include "sdlqr/sim/input_checks.hpp"
+#include "sdlqr/sim/rigid_body.hpp"
+#include "sdlqr/sim/rotors.hpp"
+#include "sdlqr/sim/sim_params.hpp"
+#include "sdlqr/sim/vio_model.hpp"
+
+namespace sdlqr::sim {
+
+// What to publish after a step; each stream has its own seq.
+struct StepOutput {
+  std::optional<ImuSample> imu;
+  std::optional<VioPose> vio;     // captured earlier; published now
+  std::optional<SimTruth> truth;
+};
+
+class Simulator {
+ public:
+  // Throws std::invalid_argument when the parameters are invalid or inconsistent.
+  Simulator(const VehicleParams& vehicle, const SimParams& params);  // seed from params.seed
+  Simulator(const VehicleParams& vehicle, const SimParams& params, uint64_t seed);
+
+  // Latest command wins, from the next step on. A command failing checkMotorCommand is ignored.
+  MotorCommandFault setMotorCommand(const MotorCommand& command);
+  // Schedules an external wrench (start_utime in the past or 0: from the next step).
+  DisturbanceFault addDisturbance(const Disturbance& disturbance);
+
+  // Advances exactly one physics period.
+  StepOutput step();
+
+  int64_t utime() const { return step_ * period_us_; }
+  int64_t stepCount() const { return step_; }
+  double period() const { return dt_; }
+  SimTruth truth() const;
+
+  const BodyState& body() const { return body_; }
+  bool onGround() const { return on_ground_; }
+  bool crashed() const { return crashed_; }
+  // Per-rotor thrust [N] produced now: motor lag output times the battery's thrust scale.
+  Vec4 rotorThrust() const { return battery_.thrustScale() * motors_.thrust(); }
+  const Vec3& acceleration() const { return acceleration_; }
+  const Battery& battery() const { return battery_; }
+  const ImuModel& imu() const { return imu_; }
+
+  // Places the vehicle (tests, scenario set-up): a state at z <= 0 rests on the ground.
+  // motor_thrust sets the motor-lag state, e.g. hover thrust for a vehicle dropped in hovering.
+  void setBodyState(const BodyState& state, const Vec4& motor_thrust = Vec4::Zero());
+
+ private:
+  VehicleParams vehicle_;
+  SimParams params_;
+  BodyProperties body_properties_;
+  RotorWrench rotor_wrench_;
+  MotorLag motors_;
+  Battery battery_;
+  DisturbanceSet disturbances_;
+  ImuModel imu_;
+  VioModel vio_;
+  double dt_;
+  int64_t period_us_;
+  int imu_decimation_;
+  int truth_decimation_;
+
+  int64_t step_ = 0;
+  BodyState body_;
+  Vec3 acceleration_ = Vec3::Zero();
+  Vec3 external_force_ = Vec3::Zero();
+  bool on_ground_ = true;
+  bool crashed_ = false;
+  int64_t truth_seq_ = 0;
+};
+
+}  // namespace sdlqr::sim

@@ -1,0 +1,45 @@
+#include "sdlqr/sim/rotors.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sdlqr::sim {
+
+Vec4 saturatedSetpoint(const MotorCommand& command, const VehicleParams& vehicle) {
+  if (!command.armed) return Vec4::Zero();
+  Vec4 setpoint;
+  for (int i = 0; i < 4; ++i) {
+    setpoint[i] = std::clamp(command.thrust[i], vehicle.min_rotor_thrust, vehicle.max_rotor_thrust);
+  }
+  return setpoint;
+}
+
+Vec4 MotorLag::thrustAt(double tau) const {
+  if (tau <= 0.0) return thrust_;
+  const double remaining = time_constant_ > 0.0 ? std::exp(-tau / time_constant_) : 0.0;
+  return setpoint_ + remaining * (thrust_ - setpoint_);
+}
+
+RotorWrench::RotorWrench(const VehicleParams& vehicle, double gravity)
+    : effectiveness_(vehicle.effectiveness()),
+      rotor_drag_(vehicle.rotor_drag),
+      mass_(vehicle.mass),
+      hover_thrust_per_rotor_(vehicle.hoverThrustPerRotor(gravity)) {}
+
+Wrench RotorWrench::operator()(const Vec4& thrust, const BodyState& s) const {
+  const Vec4 thrust_and_torques = effectiveness_ * thrust;
+  const Mat3 body_to_world = quat::rotationMatrix(s.orientation.normalized());
+
+  double rotor_speed_ratio = 0.0;  // mean rotor speed over hover rotor speed
+  for (int i = 0; i < 4; ++i) rotor_speed_ratio += std::sqrt(std::max(thrust[i], 0.0) / hover_thrust_per_rotor_);
+  rotor_speed_ratio *= 0.25;
+  const Vec3 velocity_body = body_to_world.transpose() * s.velocity;
+  const Vec3 drag_body = -mass_ * rotor_speed_ratio * rotor_drag_.cwiseProduct(velocity_body);
+
+  Wrench w;
+  w.force_world = body_to_world * (Vec3(0.0, 0.0, thrust_and_torques[0]) + drag_body);
+  w.torque_body = thrust_and_torques.tail<3>();
+  return w;
+}
+
+}  // namespace sdlqr::sim

@@ -1,0 +1,135 @@
+#include "sdlqr/sim/simulator.hpp"
+
+#include <stdexcept>
+
+#include "sdlqr/sim/ground.hpp"
+
+namespace sdlqr::sim {
+
+namespace {
+
+// Runs before any member is built, so no model ever sees invalid parameters.
+const VehicleParams& checked(const VehicleParams& vehicle, const SimParams& params) {
+  if (const std::string why = vehicle.invalidReason(); !why.empty()) throw std::invalid_argument("vehicle." + why);
+  if (const std::string why = params.invalidReason(); !why.empty()) throw std::invalid_argument("sim." + why);
+  return vehicle;
+}
+
+BodyProperties propertiesOf(const VehicleParams& vehicle, double gravity) {
+  BodyProperties p;
+  p.mass = vehicle.mass;
+  p.inertia_diag = vehicle.inertia_diag;
+  p.gravity = Vec3(0.0, 0.0, -gravity);
+  return p;
+}
+
+}  // namespace
+
+Simulator::Simulator(const VehicleParams& vehicle, const SimParams& params)
+    : Simulator(vehicle, params, static_cast<uint64_t>(params.seed)) {}
+
+Simulator::Simulator(const VehicleParams& vehicle, const SimParams& params, uint64_t seed)
+    : vehicle_(checked(vehicle, params)),
+      params_(params),
+      body_properties_(propertiesOf(vehicle, params.gravity)),
+      rotor_wrench_(vehicle, params.gravity),
+      motors_(vehicle.motor_time_constant),
+      battery_(params.battery, vehicle, params.gravity),
+      imu_(params.imu, seed),
+      vio_(params.vio, params.physics_rate_hz, seed),
+      dt_(params.physicsPeriod()),
+      period_us_(params.physicsPeriodUs()),
+      imu_decimation_(params.physics_rate_hz / params.imu.rate_hz),
+      truth_decimation_(params.physics_rate_hz / params.truth_rate_hz) {
+  BodyState start;
+  start.position = params.initial_position;
+  start.orientation = quat::fromYaw(params.initial_yaw);
+  setBodyState(start);
+}
+
+void Simulator::setBodyState(const BodyState& state, const Vec4& motor_thrust) {
+  on_ground_ = state.position.z() <= 0.0;
+  body_ = on_ground_ ? restingOnGround(state) : state;
+  body_.orientation.normalize();
+  motors_.setThrust(motor_thrust);
+  acceleration_.setZero();
+}
+
+MotorCommandFault Simulator::setMotorCommand(const MotorCommand& command) {
+  const MotorCommandFault fault = checkMotorCommand(command, vehicle_);
+  if (fault == MotorCommandFault::kNone) motors_.setSetpoint(saturatedSetpoint(command, vehicle_));
+  return fault;
+}
+
+DisturbanceFault Simulator::addDisturbance(const Disturbance& disturbance) {
+  const DisturbanceFault fault = checkDisturbance(disturbance, params_.disturbance);
+  if (fault != DisturbanceFault::kNone) return fault;
+  // The step that starts at utime() is the first that can feel it.
+  return disturbances_.add(disturbance, utime()) ? DisturbanceFault::kNone : DisturbanceFault::kQueueFull;
+}
+
+StepOutput Simulator::step() {
+  const int64_t start_utime = utime();
+  disturbances_.expire(start_utime);
+  const double thrust_scale = battery_.thrustScale();
+  // The schedule is sampled at the start of the step: disturbance edges fall on step boundaries.
+  const auto wrench_at = [&](const BodyState& s, double tau) {
+    Wrench w = rotor_wrench_(thrust_scale * motors_.thrustAt(tau), s);
+    const Wrench external = disturbances_.wrenchAt(start_utime, s);
+    w.force_world += external.force_world;
+    w.torque_body += external.torque_body;
+    return w;
+  };
+  external_force_ = disturbances_.wrenchAt(start_utime, body_).force_world;
+
+  const Vec3 velocity_before = body_.velocity;
+  BodyState next = rk4Step(body_, dt_, body_properties_, wrench_at);
+  const bool below_ground = next.position.z() < 0.0 || (on_ground_ && next.position.z() <= 0.0);
+  if (below_ground) {
+    if (!on_ground_ && isCrash(next, params_.ground)) crashed_ = true;
+    next = restingOnGround(next);
+  }
+  on_ground_ = below_ground;
+  body_ = next;
+  acceleration_ = (body_.velocity - velocity_before) / dt_;
+
+  motors_.advance(dt_);
+  battery_.update(dt_, rotorThrust());
+  ++step_;
+
+  StepOutput out;
+  const int64_t now = utime();
+  if (step_ % imu_decimation_ == 0) {
+    const Vec3 specific_force =
+        quat::rotateInverse(body_.orientation, acceleration_ - body_properties_.gravity);
+    out.imu = imu_.sample(now, body_.body_rate, specific_force);
+  }
+  out.vio = vio_.step(step_, body_.position, body_.orientation);
+  if (step_ % truth_decimation_ == 0) {
+    out.truth = truth();
+    out.truth->seq = truth_seq_++;
+  }
+  return out;
+}
+
+SimTruth Simulator::truth() const {
+  SimTruth t;
+  t.utime = utime();
+  t.seq = truth_seq_;
+  t.position = body_.position;
+  t.orientation = body_.orientation;
+  t.velocity = body_.velocity;
+  t.body_rate = body_.body_rate;
+  t.acceleration = acceleration_;
+  t.rotor_thrust = rotorThrust();
+  t.gyro_bias = imu_.gyroBias();
+  t.accel_bias = imu_.accelBias();
+  t.external_force = external_force_;
+  t.battery_voltage = battery_.voltage();
+  t.thrust_scale = battery_.thrustScale();
+  t.on_ground = on_ground_;
+  t.crashed = crashed_;
+  return t;
+}
+
+}  // namespace sdlqr::sim

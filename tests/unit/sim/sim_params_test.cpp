@@ -1,0 +1,112 @@
+// SimParams: defaults are the agreed ones, the repository's vehicle file loads, bad values name their key.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/sim/sim_params.hpp"
+
+namespace sdlqr::sim {
+namespace {
+
+SimParams loadText(const std::string& text) { return SimParams::load(ConfigReader(YAML::Load(text), "sim")); }
+
+std::string errorKeyOf(const std::string& text) {
+  try {
+    loadText(text);
+  } catch (const ConfigError& e) {
+    return e.key();
+  }
+  return "<no error>";
+}
+
+TEST(SimParams, DefaultsAreTheAgreedSensorModelAndValid) {
+  const SimParams p;
+  EXPECT_TRUE(p.valid()) << p.invalidReason();
+  EXPECT_EQ(p.physics_rate_hz, 1000);
+  EXPECT_EQ(p.imu.rate_hz, 1000);
+  EXPECT_EQ(p.truth_rate_hz, 250);
+  EXPECT_EQ(p.vio.rate_hz, 30);
+  EXPECT_EQ(p.imu.gyro_noise_density, 5e-4);
+  EXPECT_EQ(p.imu.accel_noise_density, 4e-3);
+  EXPECT_EQ(p.imu.gyro_bias_random_walk, 2e-5);
+  EXPECT_EQ(p.imu.accel_bias_random_walk, 2e-4);
+  EXPECT_EQ(p.imu.gyro_bias_initial_max, 0.02);
+  EXPECT_EQ(p.imu.accel_bias_initial_max, 0.1);
+  EXPECT_EQ(p.vio.latency_min_s, 0.030);
+  EXPECT_EQ(p.vio.latency_max_s, 0.050);
+  EXPECT_EQ(p.vio.position_std, 0.01);
+  EXPECT_EQ(p.vio.attitude_std, 0.008);
+  EXPECT_EQ(p.battery.calibration_charge, 0.7);
+  EXPECT_EQ(p.gravity, 9.81);
+  EXPECT_EQ(p.physicsPeriodUs(), 1000);
+}
+
+TEST(SimParams, RepositoryVehicleFileMatchesTheDefaults) {
+  const YAML::Node root = loadYamlFile(std::string(SDLQR_SOURCE_DIR) + "/config/quad255.yaml");
+  const ConfigReader config(root, "");
+  const SimParams file = SimParams::load(config.child("sim"));
+  const SimParams code;
+  EXPECT_EQ(file.imu.gyro_noise_density, code.imu.gyro_noise_density);
+  EXPECT_EQ(file.imu.accel_noise_density, code.imu.accel_noise_density);
+  EXPECT_EQ(file.imu.gyro_bias_random_walk, code.imu.gyro_bias_random_walk);
+  EXPECT_EQ(file.imu.accel_bias_random_walk, code.imu.accel_bias_random_walk);
+  EXPECT_EQ(file.vio.latency_min_s, code.vio.latency_min_s);
+  EXPECT_EQ(file.vio.latency_max_s, code.vio.latency_max_s);
+  EXPECT_EQ(file.vio.position_std, code.vio.position_std);
+  EXPECT_EQ(file.vio.attitude_std, code.vio.attitude_std);
+  EXPECT_EQ(file.battery.capacity_mah, code.battery.capacity_mah);
+  EXPECT_EQ(file.battery.initial_charge, code.battery.initial_charge);
+  EXPECT_EQ(file.ground.crash_speed, code.ground.crash_speed);
+  EXPECT_EQ(file.seed, code.seed);
+  EXPECT_NO_THROW(VehicleParams::load(config.child("vehicle")));
+}
+
+TEST(SimParams, LoadsNestedSections) {
+  const SimParams p = loadText(
+      "{physics_rate_hz: 2000, truth_rate_hz: 100, imu: {rate_hz: 500, gyro_noise_density: 1e-3},"
+      " vio: {rate_hz: 20, latency_min_s: 0.01, latency_max_s: 0.02}, battery: {enabled: false, cell_count: 4},"
+      " ground: {crash_speed: 3.0}, disturbance: {max_force: 10}, initial_position: [1, 2, 0], initial_yaw: 0.5,"
+      " seed: 77, gravity: 9.8}");
+  EXPECT_EQ(p.physics_rate_hz, 2000);
+  EXPECT_EQ(p.physicsPeriodUs(), 500);
+  EXPECT_EQ(p.imu.rate_hz, 500);
+  EXPECT_EQ(p.imu.gyro_noise_density, 1e-3);
+  EXPECT_EQ(p.vio.rate_hz, 20);
+  EXPECT_FALSE(p.battery.enabled);
+  EXPECT_EQ(p.battery.cell_count, 4);
+  EXPECT_EQ(p.ground.crash_speed, 3.0);
+  EXPECT_EQ(p.disturbance.max_force, 10.0);
+  EXPECT_EQ(p.initial_position.y(), 2.0);
+  EXPECT_EQ(p.seed, 77);
+}
+
+TEST(SimParams, EveryInvalidValueNamesItsKey) {
+  EXPECT_EQ(errorKeyOf("{bogus: 1}"), "sim.bogus");
+  EXPECT_EQ(errorKeyOf("{imu: {gyro_noise: 1}}"), "sim.imu.gyro_noise");
+  EXPECT_EQ(errorKeyOf("{physics_rate_hz: 3000}"), "sim.physics_rate_hz");  // 333.3 us period
+  EXPECT_EQ(errorKeyOf("{physics_rate_hz: 50}"), "sim.physics_rate_hz");
+  EXPECT_EQ(errorKeyOf("{truth_rate_hz: 300}"), "sim.truth_rate_hz");
+  EXPECT_EQ(errorKeyOf("{imu: {rate_hz: 300}}"), "sim.imu.rate_hz");
+  EXPECT_EQ(errorKeyOf("{imu: {accel_noise_density: -1}}"), "sim.imu.accel_noise_density");
+  EXPECT_EQ(errorKeyOf("{vio: {rate_hz: 0}}"), "sim.vio.rate_hz");
+  EXPECT_EQ(errorKeyOf("{vio: {latency_min_s: 0.06}}"), "sim.vio.latency_max_s");
+  EXPECT_EQ(errorKeyOf("{vio: {latency_min_s: 0.0, latency_max_s: 0.04}}"), "sim.vio.latency_max_s");  // reorders
+  EXPECT_EQ(errorKeyOf("{vio: {rate_hz: 400, latency_min_s: 0.05, latency_max_s: 0.05}}"), "sim.vio.latency_max_s");
+  EXPECT_EQ(errorKeyOf("{vio: {position_std: .nan}}"), "sim.vio.position_std");
+  EXPECT_EQ(errorKeyOf("{battery: {initial_charge: 1.2}}"), "sim.battery.initial_charge");
+  EXPECT_EQ(errorKeyOf("{battery: {cell_count: 0}}"), "sim.battery.cell_count");
+  EXPECT_EQ(errorKeyOf("{battery: {capacity_mah: 0}}"), "sim.battery.capacity_mah");
+  EXPECT_EQ(errorKeyOf("{battery: {enabled: maybe}}"), "sim.battery.enabled");
+  EXPECT_EQ(errorKeyOf("{ground: {crash_speed: 0}}"), "sim.ground.crash_speed");
+  EXPECT_EQ(errorKeyOf("{ground: {crash_tilt: 4}}"), "sim.ground.crash_tilt");
+  EXPECT_EQ(errorKeyOf("{disturbance: {max_force: -1}}"), "sim.disturbance.max_force");
+  EXPECT_EQ(errorKeyOf("{initial_position: [0, 0, -1]}"), "sim.initial_position");
+  EXPECT_EQ(errorKeyOf("{initial_position: [0, 0]}"), "sim.initial_position");
+  EXPECT_EQ(errorKeyOf("{seed: -3}"), "sim.seed");
+  EXPECT_EQ(errorKeyOf("{gravity: 0}"), "sim.gravity");
+  EXPECT_EQ(errorKeyOf("{imu: 5}"), "sim.imu");
+}
+
+}  // namespace
+}  // namespace sdlqr::sim
