@@ -17,6 +17,9 @@ std::string imuInvalidReason(const ImuParams& imu, int physics_rate_hz) {
   if (!finiteAtLeast(imu.accel_bias_random_walk, 0.0)) return "imu.accel_bias_random_walk: must be >= 0";
   if (!finiteAtLeast(imu.gyro_bias_initial_max, 0.0)) return "imu.gyro_bias_initial_max: must be >= 0";
   if (!finiteAtLeast(imu.accel_bias_initial_max, 0.0)) return "imu.accel_bias_initial_max: must be >= 0";
+  if (!finiteAbove(imu.gyro_range, 0.0)) return "imu.gyro_range: must be > 0";
+  // Below 2 g a hovering, manoeuvring vehicle would clip all the time.
+  if (!(std::isfinite(imu.accel_range) && imu.accel_range >= 20.0)) return "imu.accel_range: must be >= 20 m/s^2";
   return {};
 }
 
@@ -76,7 +79,8 @@ SimParams SimParams::load(const ConfigReader& sim) {
 
   const ConfigReader imu = sim.child("imu");
   imu.allowOnly({"rate_hz", "gyro_noise_density", "accel_noise_density", "gyro_bias_random_walk",
-                 "accel_bias_random_walk", "gyro_bias_initial_max", "accel_bias_initial_max"});
+                 "accel_bias_random_walk", "gyro_bias_initial_max", "accel_bias_initial_max", "gyro_range",
+                 "accel_range"});
   imu.read("rate_hz", p.imu.rate_hz);
   imu.read("gyro_noise_density", p.imu.gyro_noise_density);
   imu.read("accel_noise_density", p.imu.accel_noise_density);
@@ -84,6 +88,8 @@ SimParams SimParams::load(const ConfigReader& sim) {
   imu.read("accel_bias_random_walk", p.imu.accel_bias_random_walk);
   imu.read("gyro_bias_initial_max", p.imu.gyro_bias_initial_max);
   imu.read("accel_bias_initial_max", p.imu.accel_bias_initial_max);
+  imu.read("gyro_range", p.imu.gyro_range);
+  imu.read("accel_range", p.imu.accel_range);
 
   const ConfigReader vio = sim.child("vio");
   vio.allowOnly({"rate_hz", "latency_min_s", "latency_max_s", "position_std", "attitude_std"});
@@ -135,8 +141,8 @@ SimParams SimParams::load(const ConfigReader& sim) {
 }
 
 std::string SimParams::invalidReason() const {
-  if (physics_rate_hz < 100 || physics_rate_hz > 100000 || 1000000 % physics_rate_hz != 0) {
-    return "physics_rate_hz: must be in [100, 100000] with a whole-microsecond period";
+  if (physics_rate_hz < 1000 || physics_rate_hz > 100000 || 1000000 % physics_rate_hz != 0) {
+    return "physics_rate_hz: must be in [1000, 100000] with a whole-microsecond period";
   }
   if (truth_rate_hz <= 0 || physics_rate_hz % truth_rate_hz != 0) return "truth_rate_hz: must divide physics_rate_hz";
   if (std::string why = imuInvalidReason(imu, physics_rate_hz); !why.empty()) return why;

@@ -1,6 +1,7 @@
 // IMU and VIO: physically right readings, the agreed noise statistics, bias drift, VIO timing.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -215,6 +216,30 @@ TEST(Vio, ThirtyHertzDelayedThirtyToFiftyMsWithThePoseOfCaptureTime) {
     EXPECT_NEAR(att.std[i], p.vio.attitude_std, 0.2 * p.vio.attitude_std);
     EXPECT_NEAR(pos.mean[i], 0.0, 4.0 * p.vio.position_std / std::sqrt(300.0));
   }
+}
+
+}  // namespace
+}  // namespace sdlqr::sim
+
+namespace sdlqr::sim {
+namespace {
+
+TEST(Imu, TouchdownSpikeClipsAtTheSensorRange) {
+  // GIVEN a vehicle dropped from 0.5 m: the ground stops 3.1 m/s within one step
+  SimParams p = test::idealParams();
+  p.initial_position = Vec3(0, 0, 0.5);
+  Simulator sim(VehicleParams(), p);
+  double peak = 0.0;
+  for (int i = 0; i < 1000; ++i) {
+    const StepOutput out = sim.step();
+    peak = std::max(peak, out.imu->accel.cwiseAbs().maxCoeff());
+    ASSERT_LE(out.imu->accel.cwiseAbs().maxCoeff(), p.imu.accel_range);
+  }
+  // THEN the impact shows as a reading at full scale, not as an impossible value
+  std::cout << "true impact deceleration ~" << std::sqrt(2 * 9.81 * 0.5) / sim.period() << " m/s^2, peak reading "
+            << peak << "\n";
+  EXPECT_EQ(peak, p.imu.accel_range);
+  EXPECT_TRUE(sim.onGround());
 }
 
 }  // namespace

@@ -51,6 +51,10 @@ TEST(SimParams, RepositoryVehicleFileMatchesTheDefaults) {
   EXPECT_EQ(file.imu.accel_noise_density, code.imu.accel_noise_density);
   EXPECT_EQ(file.imu.gyro_bias_random_walk, code.imu.gyro_bias_random_walk);
   EXPECT_EQ(file.imu.accel_bias_random_walk, code.imu.accel_bias_random_walk);
+  EXPECT_EQ(file.imu.gyro_range, code.imu.gyro_range);
+  EXPECT_EQ(file.imu.accel_range, code.imu.accel_range);
+  EXPECT_EQ(file.physics_rate_hz, code.physics_rate_hz);
+  EXPECT_EQ(file.truth_rate_hz, code.truth_rate_hz);
   EXPECT_EQ(file.vio.latency_min_s, code.vio.latency_min_s);
   EXPECT_EQ(file.vio.latency_max_s, code.vio.latency_max_s);
   EXPECT_EQ(file.vio.position_std, code.vio.position_std);
@@ -85,7 +89,9 @@ TEST(SimParams, EveryInvalidValueNamesItsKey) {
   EXPECT_EQ(errorKeyOf("{bogus: 1}"), "sim.bogus");
   EXPECT_EQ(errorKeyOf("{imu: {gyro_noise: 1}}"), "sim.imu.gyro_noise");
   EXPECT_EQ(errorKeyOf("{physics_rate_hz: 3000}"), "sim.physics_rate_hz");  // 333.3 us period
-  EXPECT_EQ(errorKeyOf("{physics_rate_hz: 50}"), "sim.physics_rate_hz");
+  EXPECT_EQ(errorKeyOf("{physics_rate_hz: 500}"), "sim.physics_rate_hz");  // RK4 at >= 1 kHz
+  EXPECT_EQ(errorKeyOf("{imu: {accel_range: 15}}"), "sim.imu.accel_range");
+  EXPECT_EQ(errorKeyOf("{imu: {gyro_range: 0}}"), "sim.imu.gyro_range");
   EXPECT_EQ(errorKeyOf("{truth_rate_hz: 300}"), "sim.truth_rate_hz");
   EXPECT_EQ(errorKeyOf("{imu: {rate_hz: 300}}"), "sim.imu.rate_hz");
   EXPECT_EQ(errorKeyOf("{imu: {accel_noise_density: -1}}"), "sim.imu.accel_noise_density");

@@ -1,6 +1,7 @@
 #pragma once
 // MEMS IMU: gyro = body rate + bias + white noise, accel = specific force R^T (a - g) + bias +
-// white noise, with biases that start at a random offset and wander as a random walk.
+// white noise, with biases that start at a random offset and wander as a random walk. Readings
+// clip at the sensor's range, as a real one does during a touchdown.
 
 #include <cstdint>
 
@@ -28,6 +29,8 @@ class ImuModel {
   double accel_noise_std_;
   double gyro_walk_std_;    // per sample: random walk x sqrt(period)
   double accel_walk_std_;
+  double gyro_range_;
+  double accel_range_;
   Vec3 gyro_bias_;
   Vec3 accel_bias_;
   int64_t seq_ = 0;

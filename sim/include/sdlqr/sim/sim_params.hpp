@@ -21,6 +21,8 @@ struct ImuParams {
   double accel_bias_random_walk = 2e-4;   // [m/s^3/sqrt(Hz)]
   double gyro_bias_initial_max = 0.02;    // [rad/s] initial bias uniform in +-max per axis
   double accel_bias_initial_max = 0.1;    // [m/s^2] initial bias uniform in +-max per axis
+  double gyro_range = 34.9;               // [rad/s] readings clip here per axis (2000 deg/s)
+  double accel_range = 156.9;             // [m/s^2] readings clip here per axis (16 g): touchdowns do
 };
 
 // Poses waiting for their publish time; validation keeps rate x latency well below it.
@@ -65,7 +67,7 @@ struct DisturbanceLimits {
 };
 
 struct SimParams {
-  int physics_rate_hz = 1000;           // [Hz] RK4 rate; its period must be a whole number of us
+  int physics_rate_hz = 1000;           // [Hz] RK4 rate, >= 1 kHz; its period must be a whole number of us
   int truth_rate_hz = 250;              // [Hz] SIM_TRUTH rate, must divide physics_rate_hz
   ImuParams imu;
   VioParams vio;
