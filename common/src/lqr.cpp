@@ -47,21 +47,14 @@ LqrResult solveTangent(const State& x, const Input& u, const LqrParams& params) 
       discrete.A, discrete.B, system.Q, R, params.tolerance, max_doublings);
   if (dare.status != SolveStatus::kOk) return failure(dare.status, dareFailureReason(dare.status), dare.doublings);
 
-  TangentGainMatrix K_r;
-  if (!riccatiGain<kTangentDim, kInputDim>(discrete.A, discrete.B, R, dare.X, K_r) || !K_r.allFinite()) {
-    return failure(SolveStatus::kNumericalFailure, "non-finite gain", dare.doublings);
-  }
-  const TangentMatrix closed_loop = discrete.A + discrete.B * K_r;
-  if (!provenSchurStable<kTangentDim>(closed_loop, dare.X)) {
-    return failure(SolveStatus::kNumericalFailure, "closed loop not proven stable", dare.doublings);
-  }
+  const CertifiedGain<kTangentDim, kInputDim> gain =
+      certifiedRiccatiGain<kTangentDim, kInputDim>(discrete.A, discrete.B, system.Q, R, dare.X);
+  if (!gain.finite) return failure(SolveStatus::kNumericalFailure, "non-finite gain", dare.doublings);
+  if (!gain.stable) return failure(SolveStatus::kNumericalFailure, "closed loop not proven stable", dare.doublings);
   LqrResult result;
-  result.residual = dareRelativeResidual<kTangentDim, kInputDim>(discrete.A, discrete.B, system.Q, R, dare.X);
-  if (!std::isfinite(result.residual)) {
-    return failure(SolveStatus::kNumericalFailure, "non-finite Riccati residual", dare.doublings);
-  }
+  result.residual = gain.relative_residual;
   result.status = SolveStatus::kOk;
-  result.K = liftTangentGain(K_r, E);
+  result.K = liftTangentGain(gain.K, E);
   result.P = dare.X;
   result.iterations = dare.doublings;
   return result;

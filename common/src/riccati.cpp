@@ -109,6 +109,29 @@ bool provenSchurStable(const Mat<N, N>& A_cl, const Mat<N, N>& lyapunov) {
 }
 
 template <int N, int M>
+CertifiedGain<N, M> certifiedRiccatiGain(const Mat<N, N>& A, const Mat<N, M>& B, const Mat<N, N>& Q,
+                                         const Mat<M, M>& R, const Mat<N, N>& X) {
+  CertifiedGain<N, M> out;
+  Mat<M, N> K;
+  if (!riccatiGain<N, M>(A, B, R, X, K) || !K.allFinite()) return out;
+  const Mat<N, N> A_cl = A + B * K;
+  Mat<N, N> X_A_cl;
+  X_A_cl.noalias() = X * A_cl;
+  Mat<N, N> residual = Q - X;
+  residual.noalias() += A.transpose() * X_A_cl;
+  out.relative_residual = residual.norm() / Q.norm();
+  out.finite = std::isfinite(out.relative_residual);
+  if (!out.finite) return out;
+  out.K = K;
+  Mat<N, N> decrease = X;
+  decrease.noalias() -= A_cl.transpose() * X_A_cl;
+  out.stable = (Eigen::LLT<Mat<N, N>>(X).info() == Eigen::Success &&
+                Eigen::LLT<Mat<N, N>>(decrease).info() == Eigen::Success) ||
+               provenSchurStable<N>(A_cl, Mat<N, N>::Constant(std::numeric_limits<double>::quiet_NaN()));
+  return out;
+}
+
+template <int N, int M>
 ValueIterationResult<N, M> riccatiValueIteration(const Mat<N, N>& A, const Mat<N, M>& B, const Mat<N, N>& Q,
                                                  const Mat<M, M>& R, double tolerance, int max_iterations) {
   ValueIterationResult<N, M> result;
@@ -160,7 +183,9 @@ ValueIterationResult<N, M> riccatiValueIteration(const Mat<N, N>& A, const Mat<N
                                              const Mat<M, M>&, const Mat<N, N>&);                                  \
   template ValueIterationResult<N, M> riccatiValueIteration<N, M>(const Mat<N, N>&, const Mat<N, M>&,              \
                                                                   const Mat<N, N>&, const Mat<M, M>&, double, int); \
-  template bool provenSchurStable<N>(const Mat<N, N>&, const Mat<N, N>&);
+  template bool provenSchurStable<N>(const Mat<N, N>&, const Mat<N, N>&);                                        \
+  template CertifiedGain<N, M> certifiedRiccatiGain<N, M>(const Mat<N, N>&, const Mat<N, M>&, const Mat<N, N>&,    \
+                                                          const Mat<M, M>&, const Mat<N, N>&);
 
 SDLQR_INSTANTIATE_RICCATI(1, 1)
 SDLQR_INSTANTIATE_RICCATI(2, 1)

@@ -25,18 +25,26 @@ struct alignas(64) Block {
   const double* row(int i) const { return v + i * S; }
 };
 
-// out (+)= a * b (or a^T * b); the inner loop spans the full padded width W of b's rows.
+// out (+)= a * b (or a^T * b); the inner loop spans the full padded width W of b's rows. Rows are
+// taken RB at a time so that RB * W / 4 independent accumulator chains hide the FMA latency.
 template <int N, int W, bool kTransposeA, bool kAccumulate, int SA, int SB, int SO>
 SDLQR_SDA_INLINE void multiply(const double* __restrict a, const double* __restrict b, double* __restrict out) {
-  for (int i = 0; i < N; ++i) {
-    double accumulator[W];
-    for (int j = 0; j < W; ++j) accumulator[j] = kAccumulate ? out[i * SO + j] : 0.0;
-    for (int k = 0; k < N; ++k) {
-      const double factor = kTransposeA ? a[k * SA + i] : a[i * SA + k];
-      const double* b_row = b + k * SB;
-      for (int j = 0; j < W; ++j) accumulator[j] += factor * b_row[j];
+  constexpr int RB = N % 3 == 0 ? 3 : N % 2 == 0 ? 2 : 1;
+  for (int i0 = 0; i0 < N; i0 += RB) {
+    double accumulator[RB][W];
+    for (int r = 0; r < RB; ++r) {
+      for (int j = 0; j < W; ++j) accumulator[r][j] = kAccumulate ? out[(i0 + r) * SO + j] : 0.0;
     }
-    for (int j = 0; j < W; ++j) out[i * SO + j] = accumulator[j];
+    for (int k = 0; k < N; ++k) {
+      const double* b_row = b + k * SB;
+      for (int r = 0; r < RB; ++r) {
+        const double factor = kTransposeA ? a[k * SA + i0 + r] : a[(i0 + r) * SA + k];
+        for (int j = 0; j < W; ++j) accumulator[r][j] += factor * b_row[j];
+      }
+    }
+    for (int r = 0; r < RB; ++r) {
+      for (int j = 0; j < W; ++j) out[(i0 + r) * SO + j] = accumulator[r][j];
+    }
   }
 }
 

@@ -68,6 +68,21 @@ template <int N>
 bool provenSchurStable(const Eigen::Matrix<double, N, N>& A_cl, const Eigen::Matrix<double, N, N>& lyapunov);
 
 template <int N, int M>
+struct CertifiedGain {
+  Eigen::Matrix<double, M, N> K = Eigen::Matrix<double, M, N>::Zero();
+  double relative_residual = 0.0;  // as dareRelativeResidual
+  bool finite = false;             // K and the residual are finite
+  bool stable = false;             // as provenSchurStable(A + B K, X)
+};
+
+// riccatiGain, dareRelativeResidual and provenSchurStable(A + B K, X) in one pass that shares
+// their products (X (A + B K) serves both the residual and the Lyapunov decrease).
+template <int N, int M>
+CertifiedGain<N, M> certifiedRiccatiGain(const Eigen::Matrix<double, N, N>& A, const Eigen::Matrix<double, N, M>& B,
+                                         const Eigen::Matrix<double, N, N>& Q, const Eigen::Matrix<double, M, M>& R,
+                                         const Eigen::Matrix<double, N, N>& X);
+
+template <int N, int M>
 struct ValueIterationResult {
   Eigen::Matrix<double, N, N> X = Eigen::Matrix<double, N, N>::Zero();
   Eigen::Matrix<double, M, N> K = Eigen::Matrix<double, M, N>::Zero();
