@@ -1,0 +1,130 @@
+// sdlqr-estimator: wires IMU and VIO_POSE from the bus into the estimator library and publishes
+// STATE_EST on the IMU-time output grid. All logic lives in sdlqr_estimator.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sdlqr/common/channels.hpp"
+#include "sdlqr/common/cli.hpp"
+#include "sdlqr/common/config.hpp"
+#include "sdlqr/estimator/estimator.hpp"
+#include "sdlqr/node/convert.hpp"
+#include "sdlqr/node/node.hpp"
+
+namespace {
+
+using sdlqr::estimator::Estimator;
+using sdlqr::estimator::EstimatorCounters;
+using sdlqr::estimator::Rejection;
+
+// Every IMU sample is integrated, so the IMU subscription queues 64 samples (64 ms at 1 kHz) to
+// ride out a descheduled process without losing data; a lost sample would leave a hole bridged
+// only by interpolation. Poses are few and each one is worth fusing, even late.
+constexpr int kImuQueueCapacity = 64;
+constexpr int kVioQueueCapacity = 4;
+
+// Mirrors the library's counters into the heartbeat, adding only what changed since last time.
+class CounterBridge {
+ public:
+  explicit CounterBridge(sdlqr::node::Node& node) : node_(node) {
+    for (int i = 0; i < sdlqr::estimator::kRejectionCount; ++i) {
+      reject_ids_.push_back(node.counters().add(sdlqr::estimator::counterName(static_cast<Rejection>(i))));
+    }
+    fused_id_ = node.counters().add("vio.fused");
+    init_id_ = node.counters().add("estimator.initializations");
+    clock_reset_id_ = node.counters().add("estimator.clock_resets");
+    nan_output_id_ = node.counters().add("error.non_finite_output");
+  }
+
+  void sync(const EstimatorCounters& now) {
+    for (int i = 0; i < sdlqr::estimator::kRejectionCount; ++i) {
+      const size_t k = static_cast<size_t>(i);
+      for (int64_t n = seen_.rejected[k]; n < now.rejected[k]; ++n) node_.countRejected(reject_ids_[k]);
+    }
+    node_.counters().increment(fused_id_, now.vio_fused - seen_.vio_fused);
+    node_.counters().increment(init_id_, now.initializations - seen_.initializations);
+    node_.counters().increment(clock_reset_id_, now.clock_resets - seen_.clock_resets);
+    seen_ = now;
+  }
+
+  void countNonFiniteOutput() {
+    node_.countError();
+    node_.counters().increment(nan_output_id_);
+    node_.setLastError("non-finite state estimate withheld");
+  }
+
+ private:
+  sdlqr::node::Node& node_;
+  EstimatorCounters seen_;
+  std::vector<sdlqr::node::Counters::Id> reject_ids_;
+  sdlqr::node::Counters::Id fused_id_ = 0;
+  sdlqr::node::Counters::Id init_id_ = 0;
+  sdlqr::node::Counters::Id clock_reset_id_ = 0;
+  sdlqr::node::Counters::Id nan_output_id_ = 0;
+};
+
+sdlqr::node::ProcessState processStateOf(sdlqr::EstimatorStatus status) {
+  switch (status) {
+    case sdlqr::EstimatorStatus::kOk: return sdlqr::node::ProcessState::kRunning;
+    case sdlqr::EstimatorStatus::kVioTimeout: return sdlqr::node::ProcessState::kDegraded;
+    case sdlqr::EstimatorStatus::kInitializing: break;
+  }
+  return sdlqr::node::ProcessState::kStarting;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  sdlqr::ArgParser parser("sdlqr-estimator",
+                          "Error-state EKF: fuses IMU with delayed VIO poses at their capture time and publishes\n"
+                          "STATE_EST at the configured rate (default 250 Hz) on the IMU-time grid. Reads the\n"
+                          "`estimator:` section of the vehicle file. Never reads SIM_TRUTH.");
+  sdlqr::ProcessOptions options;
+  sdlqr::addProcessOptions(parser, &options);
+  parser.setEpilog(
+      "channels: in IMU, VIO_POSE; out STATE_EST, HEARTBEAT (with the vehicle prefix if given)\n"
+      "exit codes: 0 stopped by SIGINT/SIGTERM, 1 runtime failure, 2 bad option or configuration");
+  parser.parseOrExit(argc, argv);
+
+  return sdlqr::runMain(parser.program(), [&]() {
+    sdlqr::estimator::EstimatorParams params;
+    if (!options.config_path.empty()) {
+      const sdlqr::ConfigReader root(sdlqr::loadYamlFile(options.config_path), "");
+      params = sdlqr::estimator::EstimatorParams::load(root.child("estimator"));
+    }
+    Estimator estimator(params);
+
+    sdlqr::node::Node node("sdlqr-estimator", options);
+    CounterBridge counters(node);
+
+    node.subscribe<sdlqr::imu_t>(
+        sdlqr::channel::kImu,
+        [&](const sdlqr::imu_t& msg) {
+          const sdlqr::ImuSample sample = sdlqr::node::fromLcm(msg);
+          const auto estimate = estimator.onImu(sample);
+          counters.sync(estimator.counters());
+          if (!estimate) return;
+          node.setSimTime(estimate->utime);
+          node.setState(processStateOf(estimate->status));
+          if (!estimate->state().allFinite() || !estimate->body_rate.allFinite()) {
+            counters.countNonFiniteOutput();
+            return;
+          }
+          node.publish(sdlqr::channel::kStateEstimate, sdlqr::node::toLcm(*estimate));
+        },
+        kImuQueueCapacity);
+    node.subscribe<sdlqr::vio_pose_t>(
+        sdlqr::channel::kVioPose,
+        [&](const sdlqr::vio_pose_t& msg) {
+          estimator.onVio(sdlqr::node::fromLcm(msg));
+          counters.sync(estimator.counters());
+        },
+        kVioQueueCapacity);
+
+    while (node.spin(100)) {
+    }
+    node.shutdown();
+    return 0;
+  });
+}

@@ -1,0 +1,49 @@
+#pragma once
+// Error-state EKF math on NavState: IMU propagation over one ImuDelta and the VIO pose update.
+// Free functions on caller-owned state and covariance, fixed-size, no allocation.
+
+#include "sdlqr/estimator/estimator_params.hpp"
+#include "sdlqr/estimator/nav_state.hpp"
+
+namespace sdlqr::estimator {
+
+// Continuous-time noise densities squared, taken from EstimatorParams.
+struct ProcessNoise {
+  double gyro_var = 0.0;        // [rad^2/s]
+  double accel_var = 0.0;       // [m^2/s^3]
+  double gyro_bias_var = 0.0;   // [rad^2/s^3]
+  double accel_bias_var = 0.0;  // [m^2/s^5]
+  Vec3 gravity = Vec3::Zero();  // [m/s^2] world, z up: (0, 0, -g)
+
+  static ProcessNoise from(const EstimatorParams& params);
+};
+
+// Advances state and covariance over `delta`, removing the estimated biases from it first.
+void propagate(NavState& state, ErrorCovariance& covariance, const ImuDelta& delta, const ProcessNoise& noise);
+
+// The two halves of propagate(), exposed for the Jacobian test: the nominal state update, and
+// d(error after) / d(error before) evaluated at `state` (before the update).
+void propagateNominal(NavState& state, const ImuDelta& delta, const Vec3& gravity);
+ErrorCovariance errorTransition(const NavState& state, const ImuDelta& delta);
+
+struct PoseMeasurement {
+  Vec3 position = Vec3::Zero();       // [m] world
+  Quat orientation = identityQuat();  // [-] unit, body to world
+  double position_var = 0.0;          // [m^2] per axis
+  double attitude_var = 0.0;          // [rad^2] per axis
+};
+
+struct PoseUpdateResult {
+  bool accepted = false;
+  double mahalanobis_sq = 0.0;  // r^T S^-1 r of the 6-dof innovation
+};
+
+// Fuses a pose taken at the state's time. When the innovation's squared Mahalanobis distance
+// exceeds gate_chi2, nothing is changed and accepted is false.
+PoseUpdateResult updatePose(NavState& state, ErrorCovariance& covariance, const PoseMeasurement& pose,
+                            double gate_chi2);
+
+// Bias-corrected body rate over `delta` (its mean, which is what the rate loop would see).
+Vec3 correctedBodyRate(const ImuDelta& delta, const Vec3& gyro_bias);
+
+}  // namespace sdlqr::estimator

@@ -1,0 +1,311 @@
+#include "sdlqr/estimator/estimator.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "sdlqr/common/quaternion.hpp"
+
+namespace sdlqr::estimator {
+
+namespace {
+
+bool allFinite(const Vec3& v) { return v.allFinite(); }
+
+int64_t secondsToUs(double seconds) { return static_cast<int64_t>(std::llround(seconds * 1e6)); }
+
+}  // namespace
+
+const char* counterName(Rejection reason) {
+  switch (reason) {
+    case Rejection::kImuNonFinite: return "reject.imu.nonfinite";
+    case Rejection::kImuOutOfRange: return "reject.imu.range";
+    case Rejection::kImuTimeBackwards: return "reject.imu.time_backwards";
+    case Rejection::kImuTimeGap: return "reject.imu.time_gap";
+    case Rejection::kVioNonFinite: return "reject.vio.nonfinite";
+    case Rejection::kVioBadQuaternion: return "reject.vio.quaternion";
+    case Rejection::kVioBadStd: return "reject.vio.std";
+    case Rejection::kVioOutOfOrder: return "reject.vio.out_of_order";
+    case Rejection::kVioTooOld: return "reject.vio.too_old";
+    case Rejection::kVioFuture: return "reject.vio.time_future";
+    case Rejection::kVioGated: return "reject.vio.gated";
+    case Rejection::kVioSuperseded: return "reject.vio.superseded";
+  }
+  return "reject.unknown";
+}
+
+int64_t EstimatorCounters::rejectedTotal() const {
+  int64_t total = 0;
+  for (int64_t n : rejected) total += n;
+  return total;
+}
+
+Estimator::Estimator(const EstimatorParams& params)
+    : params_(params),
+      noise_(ProcessNoise::from(params)),
+      period_us_(params.outputPeriodUs()),
+      downsampler_(params.outputPeriodUs()),
+      history_(params.valid() ? params.historyCapacity() : 2) {
+  const std::string reason = params.invalidReason();
+  if (!reason.empty()) throw std::invalid_argument("estimator." + reason);
+}
+
+void Estimator::reset() {
+  downsampler_.reset();
+  history_.clear();
+  initialized_ = false;
+  has_fused_ = false;
+  last_fused_seq_ = -1;
+  pending_vio_.reset();
+  timing_rejects_in_a_row_ = 0;
+  status_ = EstimatorStatus::kInitializing;
+}
+
+const NavState& Estimator::state() const {
+  static const NavState kNone;
+  return history_.empty() ? kNone : history_.newest().state;
+}
+
+const ErrorCovariance& Estimator::covariance() const {
+  static const ErrorCovariance kNone = ErrorCovariance::Zero();
+  return history_.empty() ? kNone : history_.newest().covariance;
+}
+
+int64_t Estimator::stateUtime() const { return history_.empty() ? 0 : history_.newest().utime; }
+
+VioOutcome Estimator::reject(Rejection reason) {
+  ++counters_.rejected[static_cast<size_t>(reason)];
+  last_rejection_ = reason;
+  return VioOutcome::kRejected;
+}
+
+// ---- IMU ----------------------------------------------------------------------------------------
+
+bool Estimator::imuTimingAcceptable(const ImuSample& sample) {
+  if (!downsampler_.started()) return true;
+  const int64_t step = sample.utime - downsampler_.lastSampleTime();
+  Rejection reason;
+  if (step <= 0) {
+    reason = Rejection::kImuTimeBackwards;
+  } else if (step > secondsToUs(params_.imu_max_gap)) {
+    reason = Rejection::kImuTimeGap;
+  } else {
+    timing_rejects_in_a_row_ = 0;
+    return true;
+  }
+  reject(reason);
+  // One bad timestamp is dropped; a sustained run means the clock itself changed (a restarted
+  // simulator, a replayed log, a long outage): start over on the new clock.
+  if (++timing_rejects_in_a_row_ < params_.imu_time_reset_count) return false;
+  reset();
+  ++counters_.clock_resets;
+  return true;
+}
+
+std::optional<StateEstimate> Estimator::onImu(const ImuSample& sample) {
+  if (!allFinite(sample.gyro) || !allFinite(sample.accel)) {
+    reject(Rejection::kImuNonFinite);
+    return std::nullopt;
+  }
+  if (sample.gyro.cwiseAbs().maxCoeff() > params_.gyro_range || sample.accel.cwiseAbs().maxCoeff() > params_.accel_range) {
+    reject(Rejection::kImuOutOfRange);
+    return std::nullopt;
+  }
+  if (!imuTimingAcceptable(sample)) return std::nullopt;
+
+  if (!downsampler_.started()) {
+    // The stream's first instant gets a history entry too, so a pose captured exactly then (the
+    // simulator's first frame) can initialise the filter.
+    HistoryEntry& entry = history_.pushNewest();
+    entry = HistoryEntry();
+    entry.utime = sample.utime;
+    entry.imu_seq = sample.seq;
+  }
+  window_closed_ = false;
+  downsampler_.add(sample, [this](const ImuWindow& window) { onWindow(window); });
+  if (!window_closed_) return std::nullopt;
+  if (pending_vio_ && pending_vio_->utime <= history_.newest().utime) {
+    const VioPose pose = *pending_vio_;
+    pending_vio_.reset();
+    // Only the first window of a stream can start after a pose that was pending in it.
+    if (pose.utime < history_.oldest().utime) {
+      reject(Rejection::kVioTooOld);
+    } else {
+      fuseAtCaptureTime(pose, needsInitialization(pose.utime));
+    }
+  }
+  updateStatus();
+  return makeOutput();
+}
+
+void Estimator::onWindow(const ImuWindow& window) {
+  NavState state;
+  ErrorCovariance covariance = ErrorCovariance::Zero();
+  if (initialized_ && !history_.empty()) {
+    state = history_.newest().state;
+    covariance = history_.newest().covariance;
+    propagate(state, covariance, window.delta, noise_);
+  }
+  HistoryEntry& entry = history_.pushNewest();
+  entry.utime = window.end_utime;
+  entry.state = state;
+  entry.covariance = covariance;
+  entry.input = window.delta;
+  entry.imu_seq = window.last_imu_seq;
+  ++counters_.imu_windows;
+  window_closed_ = true;
+}
+
+// ---- VIO ----------------------------------------------------------------------------------------
+
+bool Estimator::needsInitialization(int64_t capture_utime) const {
+  return !initialized_ || capture_utime - last_fused_capture_ > secondsToUs(params_.reinit_after);
+}
+
+VioOutcome Estimator::onVio(const VioPose& pose) {
+  if (!allFinite(pose.position) || !pose.orientation.allFinite() || !std::isfinite(pose.position_std) ||
+      !std::isfinite(pose.attitude_std)) {
+    return reject(Rejection::kVioNonFinite);
+  }
+  if (pose.position_std < 0.0 || pose.attitude_std < 0.0) return reject(Rejection::kVioBadStd);
+  if (std::abs(pose.orientation.norm() - 1.0) > params_.quaternion_norm_tolerance) {
+    return reject(Rejection::kVioBadQuaternion);
+  }
+  const int64_t t = pose.utime;
+  if (has_fused_ && t <= last_fused_capture_) return reject(Rejection::kVioOutOfOrder);
+  if (pending_vio_ && t <= pending_vio_->utime) return reject(Rejection::kVioOutOfOrder);
+  if (!downsampler_.started() || t > downsampler_.lastSampleTime()) return reject(Rejection::kVioFuture);
+  if (!history_.empty() && t < history_.oldest().utime) return reject(Rejection::kVioTooOld);
+  if (history_.empty() || t > history_.newest().utime) {
+    // Captured inside the IMU window still being integrated: fuse it when that window closes.
+    if (pending_vio_) reject(Rejection::kVioSuperseded);
+    pending_vio_ = pose;
+    return VioOutcome::kPending;
+  }
+  return fuseAtCaptureTime(pose, needsInitialization(t));
+}
+
+PoseMeasurement Estimator::measurementOf(const VioPose& pose) const {
+  PoseMeasurement z;
+  z.position = pose.position;
+  z.orientation = pose.orientation.normalized();
+  const double position_std = pose.position_std > 0.0 ? pose.position_std : params_.vio_position_std;
+  const double attitude_std = pose.attitude_std > 0.0 ? pose.attitude_std : params_.vio_attitude_std;
+  z.position_var = position_std * position_std;
+  z.attitude_var = attitude_std * attitude_std;
+  return z;
+}
+
+ErrorCovariance Estimator::initialCovariance(const PoseMeasurement& pose) const {
+  ErrorCovariance p = ErrorCovariance::Zero();
+  p.diagonal().segment<3>(kErrPos).setConstant(pose.position_var);
+  p.diagonal().segment<3>(kErrVel).setConstant(params_.initial_velocity_std * params_.initial_velocity_std);
+  p.diagonal().segment<3>(kErrRot).setConstant(pose.attitude_var);
+  p.diagonal().segment<3>(kErrGyroBias).setConstant(params_.initial_gyro_bias_std * params_.initial_gyro_bias_std);
+  p.diagonal().segment<3>(kErrAccelBias).setConstant(params_.initial_accel_bias_std * params_.initial_accel_bias_std);
+  return p;
+}
+
+VioOutcome Estimator::fuseAtCaptureTime(const VioPose& pose, bool initialize) {
+  const int64_t t = pose.utime;
+  const int base = history_.indexAtOrBefore(t);  // callers guarantee oldest <= t <= newest
+  const PoseMeasurement z = measurementOf(pose);
+
+  NavState state = history_.at(base).state;
+  ErrorCovariance covariance = history_.at(base).covariance;
+  ImuDelta rest;
+  int first_to_recompute = base + 1;
+  const bool inside_window = t > history_.at(base).utime;
+  if (inside_window) {
+    // Advance to the capture time itself with the matching part of the next window.
+    const HistoryEntry& next = history_.at(base + 1);
+    const double fraction =
+        static_cast<double>(t - history_.at(base).utime) / static_cast<double>(next.utime - history_.at(base).utime);
+    const ImuDeltaSplit parts = split(next.input, fraction);
+    if (initialized_) propagate(state, covariance, parts.first, noise_);
+    rest = parts.rest;
+  }
+
+  if (initialize) {
+    // Attitude and position from the pose, velocity zero; a re-initialisation keeps the bias
+    // estimates, which a VIO gap does not invalidate.
+    ErrorCovariance fresh = initialCovariance(z);
+    NavState start;
+    if (initialized_) {
+      start.gyro_bias = state.gyro_bias;
+      start.accel_bias = state.accel_bias;
+      fresh.block<6, 6>(kErrGyroBias, kErrGyroBias) = covariance.block<6, 6>(kErrGyroBias, kErrGyroBias);
+    }
+    start.position = z.position;
+    start.orientation = z.orientation;
+    state = start;
+    covariance = fresh;
+  } else if (!updatePose(state, covariance, z, params_.gate_chi2).accepted) {
+    return reject(Rejection::kVioGated);
+  }
+
+  int updated = base;
+  if (inside_window) {
+    propagate(state, covariance, rest, noise_);
+    updated = base + 1;
+  }
+  history_.at(updated).state = state;
+  history_.at(updated).covariance = covariance;
+  for (first_to_recompute = updated + 1; first_to_recompute < history_.size(); ++first_to_recompute) {
+    HistoryEntry& entry = history_.at(first_to_recompute);
+    const HistoryEntry& previous = history_.at(first_to_recompute - 1);
+    entry.state = previous.state;
+    entry.covariance = previous.covariance;
+    propagate(entry.state, entry.covariance, entry.input, noise_);
+  }
+
+  initialized_ = true;
+  has_fused_ = true;
+  last_fused_capture_ = t;
+  last_fused_seq_ = pose.seq;
+  if (initialize) {
+    ++counters_.initializations;
+  } else {
+    ++counters_.vio_fused;
+  }
+  updateStatus();
+  return initialize ? VioOutcome::kInitialized : VioOutcome::kFused;
+}
+
+// ---- output -------------------------------------------------------------------------------------
+
+void Estimator::updateStatus() {
+  if (!initialized_) {
+    status_ = EstimatorStatus::kInitializing;
+  } else if (stateUtime() - last_fused_capture_ > secondsToUs(params_.vio_timeout)) {
+    status_ = EstimatorStatus::kVioTimeout;
+  } else {
+    status_ = EstimatorStatus::kOk;
+  }
+}
+
+StateEstimate Estimator::makeOutput() {
+  const HistoryEntry& newest = history_.newest();
+  StateEstimate out;
+  out.utime = newest.utime;
+  out.seq = output_seq_++;
+  out.imu_seq = newest.imu_seq;
+  out.vio_seq = last_fused_seq_;
+  out.status = status_;
+  if (initialized_) {
+    const NavState& x = newest.state;
+    out.position = x.position;
+    out.orientation = x.orientation;
+    out.velocity = x.velocity;
+    out.gyro_bias = x.gyro_bias;
+    out.accel_bias = x.accel_bias;
+    out.body_rate = correctedBodyRate(newest.input, x.gyro_bias);
+    out.position_std = newest.covariance.diagonal().segment<3>(kErrPos).cwiseSqrt();
+    out.attitude_std = newest.covariance.diagonal().segment<3>(kErrRot).cwiseSqrt();
+  } else {
+    out.body_rate = correctedBodyRate(newest.input, Vec3::Zero());
+  }
+  ++counters_.outputs;
+  return out;
+}
+
+}  // namespace sdlqr::estimator

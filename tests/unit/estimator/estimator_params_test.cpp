@@ -1,0 +1,98 @@
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "sdlqr/estimator/estimator_params.hpp"
+
+namespace sdlqr::estimator {
+namespace {
+
+EstimatorParams loadText(const std::string& text) {
+  return EstimatorParams::load(ConfigReader(YAML::Load(text), "estimator"));
+}
+
+std::string errorKeyOf(const std::string& text) {
+  try {
+    loadText(text);
+  } catch (const ConfigError& e) {
+    return e.key();
+  }
+  return "<no error>";
+}
+
+TEST(EstimatorParams, DefaultsAreValidAndMatchTheAgreedSensorModel) {
+  const EstimatorParams p;
+  EXPECT_TRUE(p.valid()) << p.invalidReason();
+  EXPECT_EQ(p.gyro_noise_density, 5e-4);
+  EXPECT_EQ(p.accel_noise_density, 4e-3);
+  EXPECT_EQ(p.gyro_bias_random_walk, 2e-5);
+  EXPECT_EQ(p.accel_bias_random_walk, 2e-4);
+  EXPECT_EQ(p.output_rate, 250.0);
+  EXPECT_EQ(p.outputPeriodUs(), 4000);
+  EXPECT_GE(p.history_length, 0.15);
+}
+
+TEST(EstimatorParams, HistoryCapacityReachesHistoryLengthBack) {
+  EstimatorParams p;
+  p.history_length = 0.2;
+  // 0.2 s / 4 ms = 50 periods back from the newest: 51 states, plus one before the oldest time.
+  EXPECT_EQ(p.historyCapacity(), 52);
+  p.history_length = 0.15;
+  p.output_rate = 200.0;
+  EXPECT_EQ(p.historyCapacity(), 32);
+}
+
+TEST(EstimatorParams, LoadsEveryKey) {
+  const EstimatorParams p = loadText(
+      "{gyro_noise_density: 1e-3, accel_noise_density: 2e-2, gyro_bias_random_walk: 3e-5,"
+      " accel_bias_random_walk: 4e-4, gyro_range: 30, accel_range: 100, initial_velocity_std: 0.5,"
+      " initial_gyro_bias_std: 0.03, initial_accel_bias_std: 0.2, vio_position_std: 0.02, vio_attitude_std: 0.01,"
+      " output_rate: 200, history_length: 0.3, vio_timeout: 0.4, reinit_after: 1.5, gate_chi2: 20,"
+      " quaternion_norm_tolerance: 0.02, imu_max_gap: 0.05, imu_time_reset_count: 10, gravity: 9.8}");
+  EXPECT_EQ(p.gyro_noise_density, 1e-3);
+  EXPECT_EQ(p.accel_noise_density, 2e-2);
+  EXPECT_EQ(p.gyro_bias_random_walk, 3e-5);
+  EXPECT_EQ(p.accel_bias_random_walk, 4e-4);
+  EXPECT_EQ(p.gyro_range, 30.0);
+  EXPECT_EQ(p.accel_range, 100.0);
+  EXPECT_EQ(p.initial_velocity_std, 0.5);
+  EXPECT_EQ(p.initial_gyro_bias_std, 0.03);
+  EXPECT_EQ(p.initial_accel_bias_std, 0.2);
+  EXPECT_EQ(p.vio_position_std, 0.02);
+  EXPECT_EQ(p.vio_attitude_std, 0.01);
+  EXPECT_EQ(p.output_rate, 200.0);
+  EXPECT_EQ(p.history_length, 0.3);
+  EXPECT_EQ(p.vio_timeout, 0.4);
+  EXPECT_EQ(p.reinit_after, 1.5);
+  EXPECT_EQ(p.gate_chi2, 20.0);
+  EXPECT_EQ(p.quaternion_norm_tolerance, 0.02);
+  EXPECT_EQ(p.imu_max_gap, 0.05);
+  EXPECT_EQ(p.imu_time_reset_count, 10);
+  EXPECT_EQ(p.gravity, 9.8);
+}
+
+TEST(EstimatorParams, BadValuesNameTheirKey) {
+  EXPECT_EQ(errorKeyOf("{gyro_noise_density: 0}"), "estimator.gyro_noise_density");
+  EXPECT_EQ(errorKeyOf("{accel_bias_random_walk: -1}"), "estimator.accel_bias_random_walk");
+  EXPECT_EQ(errorKeyOf("{output_rate: 300}"), "estimator.output_rate");  // 3333.3 us is not whole
+  EXPECT_EQ(errorKeyOf("{output_rate: 0}"), "estimator.output_rate");
+  EXPECT_EQ(errorKeyOf("{history_length: 0.1}"), "estimator.history_length");  // shorter than VIO latency + margin
+  EXPECT_EQ(errorKeyOf("{vio_timeout: 0.5, reinit_after: 0.4}"), "estimator.reinit_after");
+  EXPECT_EQ(errorKeyOf("{gate_chi2: 0}"), "estimator.gate_chi2");
+  EXPECT_EQ(errorKeyOf("{quaternion_norm_tolerance: 0.7}"), "estimator.quaternion_norm_tolerance");
+  EXPECT_EQ(errorKeyOf("{imu_time_reset_count: 0}"), "estimator.imu_time_reset_count");
+  EXPECT_EQ(errorKeyOf("{gravity: .nan}"), "estimator.gravity");
+  EXPECT_EQ(errorKeyOf("{output_rate: fast}"), "estimator.output_rate");
+  EXPECT_EQ(errorKeyOf("{history_lenght: 0.2}"), "estimator.history_lenght");
+}
+
+TEST(EstimatorParams, TheVehicleFileSectionLoads) {
+  const ConfigReader root(loadYamlFile(std::string(SDLQR_SOURCE_DIR) + "/config/quad255.yaml"), "");
+  ASSERT_TRUE(root.has("estimator"));
+  const EstimatorParams p = EstimatorParams::load(root.child("estimator"));
+  EXPECT_TRUE(p.valid());
+  EXPECT_EQ(p.outputPeriodUs(), 4000);
+}
+
+}  // namespace
+}  // namespace sdlqr::estimator
