@@ -109,7 +109,9 @@ void writeChannel(JsonWriter& json, const ChannelMetrics& c) {
   json.member("rate_hz", c.receive_rate_hz);
   writeDistribution(json, "interval_ms", c.receive_interval_ms);
   json.endObject();
-  if (c.decoded > 0) {
+  if (c.several_publishers) {
+    json.member("note", "several processes publish here: see \"heartbeat\" for per-process figures");
+  } else if (c.decoded > 0) {
     json.key("sim");
     json.beginObject();
     json.memberInt("first_utime", c.first_utime);
@@ -137,6 +139,7 @@ void writeHeartbeat(JsonWriter& json, const ProcessHeartbeatMetrics& p) {
   json.beginObject();
   json.memberInt("heartbeats", p.heartbeats);
   json.memberInt("distinct_pids", p.distinct_pids);
+  json.memberInt("seq_lost", p.seq_lost);
   json.member("first_receive_s", p.first_receive_s);
   json.member("last_receive_s", p.last_receive_s);
   json.member("max_interval_s", p.max_interval_s);
@@ -185,6 +188,10 @@ ChannelMetrics computeChannelMetrics(const ChannelTimeline& t, int64_t log_start
   m.receive_interval_ms = intervalsMs(t.event_receive_utime);
 
   m.sim_rate_hz = kNaN;
+  if (isHeartbeat(t)) {
+    m.several_publishers = true;
+    return m;
+  }
   m.sim_interval_ms = intervalsMs(t.utime);
   if (!t.utime.empty()) {
     m.first_utime = t.utime.front();
@@ -202,7 +209,7 @@ ChannelMetrics computeChannelMetrics(const ChannelTimeline& t, int64_t log_start
     else if (step == 0) ++m.seq_repeats;
   }
 
-  if (origin.valid && !isHeartbeat(t) && !t.utime.empty()) {
+  if (origin.valid && !t.utime.empty()) {
     std::vector<double> lags;
     lags.reserve(t.utime.size());
     for (size_t i = 0; i < t.utime.size(); ++i) {
@@ -275,6 +282,7 @@ std::vector<ProcessHeartbeatMetrics> computeHeartbeatMetrics(const HeartbeatSeri
       p.first_receive_s = receive_s;
     } else {
       p.max_interval_s = std::max(p.max_interval_s, static_cast<double>(receive - last_receive[h.process]) * kUsToS);
+      if (h.pid == p.last.pid && h.seq > p.last.seq + 1) p.seq_lost += h.seq - p.last.seq - 1;
     }
     ++p.heartbeats;
     p.last_receive_s = receive_s;

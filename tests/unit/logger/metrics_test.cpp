@@ -118,26 +118,43 @@ TEST(Metrics, RateCommandJitterInSimulationTime) {
 
 TEST(Metrics, LastHeartbeatPerProcessAndRestarts) {
   HeartbeatSeries series;
-  auto add = [&](const std::string& process, int32_t pid, int8_t state, int64_t receive) {
+  auto add = [&](const std::string& process, int32_t pid, int8_t state, int64_t receive, int64_t seq) {
     HeartbeatRecord h;
     h.process = process;
     h.pid = pid;
+    h.seq = seq;
     h.state = state;
     h.errors = receive;
     h.counters = {{"reject.nan", 3}};
     series.records.push_back(h);
     series.receive_utime.push_back(receive);
   };
-  add("sdlqr-gains", 10, 1, 1'000'000);
-  add("sdlqr-controller", 11, 1, 1'100'000);
-  add("sdlqr-gains", 10, 1, 2'000'000);
-  add("sdlqr-gains", 12, 0, 5'000'000);  // restarted after a 3 s silence
+  add("sdlqr-gains", 10, 1, 1'000'000, 0);
+  add("sdlqr-controller", 11, 1, 1'100'000, 0);
+  add("sdlqr-gains", 10, 1, 2'000'000, 3);  // heartbeats 1 and 2 lost
+  add("sdlqr-gains", 12, 0, 5'000'000, 0);  // restarted after a 3 s silence: seq starts over
   const std::vector<ProcessHeartbeatMetrics> m = computeHeartbeatMetrics(series, 0);
   ASSERT_EQ(m.size(), 2u);
   EXPECT_EQ(m[0].process, "sdlqr-controller");
   EXPECT_EQ(m[1].process, "sdlqr-gains");
   EXPECT_EQ(m[1].heartbeats, 3);
   EXPECT_EQ(m[1].distinct_pids, 2);
+  EXPECT_EQ(m[1].seq_lost, 2);
+  EXPECT_EQ(m[0].seq_lost, 0);
+
+  // On the shared channel itself, seq and clocks of different processes are not mixed.
+  ChannelTimeline channel = timeline("HEARTBEAT", "heartbeat_t");
+  for (size_t i = 0; i < series.records.size(); ++i) {
+    channel.addEvent(series.receive_utime[i], 100);
+    channel.addDecoded(series.receive_utime[i], series.records[i].utime, series.records[i].seq);
+  }
+  PacingOrigin origin;
+  origin.valid = true;
+  const ChannelMetrics hb = computeChannelMetrics(channel, 0, origin);
+  EXPECT_TRUE(hb.several_publishers);
+  EXPECT_EQ(hb.seq_restarts, 0);
+  EXPECT_FALSE(hb.has_pacing);
+  EXPECT_DOUBLE_EQ(hb.receive_interval_ms.max, 3000.0);
   EXPECT_DOUBLE_EQ(m[1].max_interval_s, 3.0);
   EXPECT_EQ(m[1].last.pid, 12);
   EXPECT_EQ(m[1].last.errors, 5'000'000);

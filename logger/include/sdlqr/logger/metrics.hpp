@@ -102,6 +102,10 @@ struct ChannelMetrics {
   int64_t seq_repeats = 0;   // same seq twice in a row
   bool has_pacing = false;
   Distribution pacing_lag_ms;  // see the header comment
+  // HEARTBEAT carries every process's heartbeat, each with its own seq and clock: the sim,
+  // seq and pacing figures above would mix them, so they are left out (see the per-process
+  // heartbeat metrics instead).
+  bool several_publishers = false;
 };
 
 struct GainsMetrics {
@@ -128,6 +132,7 @@ struct ProcessHeartbeatMetrics {
   std::string process;
   int64_t heartbeats = 0;
   int64_t distinct_pids = 0;  // > 1: the process was restarted during the log
+  int64_t seq_lost = 0;       // heartbeats missing (forward seq gaps of one pid)
   double first_receive_s = 0.0;
   double last_receive_s = 0.0;
   double max_interval_s = 0.0;  // longest silence between two heartbeats (receive clock)
