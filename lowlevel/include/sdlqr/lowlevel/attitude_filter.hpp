@@ -1,0 +1,59 @@
+#pragma once
+// IMU-only attitude and vertical-velocity estimate that the failsafe flies on when the
+// estimator or controller is gone. It runs on every sample all the time, so it is ready.
+//
+// Attitude: gyro integration corrected towards the accelerometer's "up" (complementary filter).
+// On a multirotor the specific force is close to the thrust axis whatever the attitude, except
+// in steady flight, so the correction is slow in flight and fast only at rest on the ground.
+// Vertical velocity: world-z acceleration integrated with a leak (no position sensor here).
+// At rest on the ground the filter learns the gyro bias and the vertical accelerometer offset.
+
+#include <string>
+
+#include "sdlqr/common/config.hpp"
+#include "sdlqr/common/types.hpp"
+
+namespace sdlqr::lowlevel {
+
+struct AttitudeFilterParams {
+  double flight_gain = 0.2;        // [1/s] accelerometer levelling rate in flight
+  double ground_gain = 2.0;        // [1/s] accelerometer levelling rate at rest on the ground
+  double accel_gate = 0.15;        // [-] levelling only while | |f| - g | < accel_gate * g
+  double bias_time_constant = 0.5; // [s] learning time of gyro bias and vertical offset at rest
+  double velocity_leak_time = 3.0; // [s] leak of the vertical velocity towards 0 in normal flight
+
+  static AttitudeFilterParams load(const ConfigReader& reader);
+  std::string invalidReason() const;
+  bool valid() const { return invalidReason().empty(); }
+};
+
+class AttitudeFilter {
+ public:
+  AttitudeFilter(const AttitudeFilterParams& params, double gravity);
+
+  // gyro [rad/s] and accel [m/s^2] in the body frame, dt [s] > 0. `at_rest_on_ground` enables
+  // fast levelling and bias learning; `velocity_leak_time` [s] (0: no leak) is chosen by the
+  // caller, longer during a failsafe descent, where the leak would otherwise eat the descent.
+  void update(const Vec3& gyro, const Vec3& accel, double dt, bool at_rest_on_ground, double velocity_leak_time);
+
+  bool initialized() const { return initialized_; }
+  const Quat& attitude() const { return attitude_; }  // body to world, yaw arbitrary at start
+  Vec3 bodyRate(const Vec3& gyro) const { return gyro - gyro_bias_; }
+  const Vec3& gyroBias() const { return gyro_bias_; }
+  double verticalAccelOffset() const { return vertical_accel_offset_; }
+  double verticalVelocity() const { return vertical_velocity_; }  // [m/s] world z, up positive
+  double verticalAcceleration() const { return vertical_acceleration_; }
+  void reset();
+
+ private:
+  AttitudeFilterParams params_;
+  double gravity_;
+  bool initialized_ = false;
+  Quat attitude_ = identityQuat();
+  Vec3 gyro_bias_ = Vec3::Zero();
+  double vertical_accel_offset_ = 0.0;
+  double vertical_velocity_ = 0.0;
+  double vertical_acceleration_ = 0.0;
+};
+
+}  // namespace sdlqr::lowlevel

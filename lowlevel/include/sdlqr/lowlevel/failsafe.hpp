@@ -1,0 +1,66 @@
+#pragma once
+// What the bodyrate loop flies when RATE_CMD goes silent (DESIGN §7): level the vehicle on the
+// IMU-only attitude, hold yaw rate at zero, descend at a fixed rate on the leaky vertical
+// velocity with thrust around hover, and report touchdown so the loop can disarm.
+// Touchdown: at rest while a descent is commanded but the velocity estimate says the vehicle is
+// not descending (the ground holds it); confirmed faster once an impact spike was seen.
+
+#include <string>
+
+#include "sdlqr/common/config.hpp"
+#include "sdlqr/common/types.hpp"
+#include "sdlqr/lowlevel/ground_detector.hpp"
+
+namespace sdlqr::lowlevel {
+
+struct FailsafeParams {
+  double descent_rate = 0.5;         // [m/s] commanded sink rate
+  double velocity_gain = 2.0;        // [1/s] thrust [m/s^2] per m/s of vertical velocity error
+  // The integral absorbs a wrong hover thrust (battery sag, a learned value still high after a
+  // climb), which a proportional term alone would turn into a hover instead of a descent.
+  double velocity_integral_gain = 1.0;  // [1/s^2] thrust [m/s^2] per m of integrated error
+  double attitude_gain = 5.0;        // [1/s] levelling body rate per radian of tilt
+  double max_rate = 3.0;             // [rad/s] bound on the levelling body rate
+  double thrust_min_ratio = 0.6;     // [-] thrust bounds as multiples of the hover thrust
+  double thrust_max_ratio = 1.5;     // [-]
+  double velocity_leak_time = 20.0;  // [s] vertical velocity leak while descending
+  double touchdown_time = 0.3;       // [s] rest with no descent before disarming
+  double impact_rest_time = 0.1;     // [s] the same after an impact spike
+
+  static FailsafeParams load(const ConfigReader& reader);
+  std::string invalidReason() const;
+  bool valid() const { return invalidReason().empty(); }
+};
+
+struct FailsafeOutput {
+  Vec3 body_rate = Vec3::Zero();  // [rad/s] setpoint for the rate controller
+  double thrust = 0.0;            // [m/s^2] mass-normalized collective
+  bool touched_down = false;      // disarm now
+};
+
+class Failsafe {
+ public:
+  explicit Failsafe(const FailsafeParams& params = FailsafeParams()) : params_(params) {}
+
+  // Starts a new descent: clears the touchdown evidence.
+  void engage();
+  // attitude: body to world; vertical_velocity [m/s] up positive; hover_thrust [m/s^2].
+  FailsafeOutput step(const Quat& attitude, double vertical_velocity, double hover_thrust, const GroundDetector& ground,
+                      double dt);
+  const FailsafeParams& params() const { return params_; }
+  double restTime() const { return rest_time_; }
+  double velocityIntegral() const { return velocity_integral_; }
+  bool impactSeen() const { return impact_seen_; }
+
+ private:
+  FailsafeParams params_;
+  double rest_time_ = 0.0;
+  double velocity_integral_ = 0.0;  // [m/s^2] thrust correction
+  bool impact_seen_ = false;
+};
+
+// Body rate that turns body z towards world z at `gain` per radian, with no rotation about
+// body z, bounded by `max_rate`.
+Vec3 levellingRate(const Quat& attitude, double gain, double max_rate);
+
+}  // namespace sdlqr::lowlevel

@@ -1,0 +1,115 @@
+// sdlqr-lowlevel: wires the bus to the 1 kHz bodyrate loop (lowlevel/ library). One MOTOR_CMD
+// per accepted IMU sample; RATE_CMD, COMMAND and PARAMS only update the loop's inputs.
+
+#include <array>
+#include <string>
+
+#include "sdlqr/common/cli.hpp"
+#include "sdlqr/common/config.hpp"
+#include "sdlqr/common/params.hpp"
+#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/lowlevel/bodyrate_loop.hpp"
+#include "sdlqr/lowlevel/param_check.hpp"
+#include "sdlqr/node/convert.hpp"
+#include "sdlqr/node/node.hpp"
+
+using namespace sdlqr;
+
+namespace {
+
+// Loop counters that are not message rejections, mirrored into HEARTBEAT by their increase.
+struct EventCounter {
+  node::Counters::Id id;
+  const int64_t* value;
+  int64_t reported = 0;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return runMain("sdlqr-lowlevel", [&] {
+    ProcessOptions options;
+    ArgParser parser("sdlqr-lowlevel",
+                     "Bodyrate loop, one step per IMU sample (1 kHz): rate PID, mixer with desaturation,\n"
+                     "arming, and the RATE_CMD-silent failsafe (level, descend, disarm on the ground).\n"
+                     "In: IMU, RATE_CMD, COMMAND, PARAMS (FIELD_MASS).  Out: MOTOR_CMD, HEARTBEAT.");
+    addProcessOptions(parser, &options);
+    parser.setEpilog("exit codes: 0 stopped by SIGINT/SIGTERM, 1 runtime failure, 2 bad option or configuration");
+    parser.parseOrExit(argc, argv);
+
+    ConfigReader config(YAML::Node(YAML::NodeType::Map), "");
+    if (!options.config_path.empty()) config = ConfigReader(loadYamlFile(options.config_path), "");
+    const VehicleParams vehicle = VehicleParams::load(config.child("vehicle"));
+    const double gravity = LqrParams::load(config.child("lqr")).gravity;
+    const ConfigReader lowlevel_config = config.child("lowlevel");
+    const lowlevel::LowlevelParams params = lowlevel::LowlevelParams::load(lowlevel_config);
+    lowlevel::throwIfInvalid(lowlevel_config, params.invalidReasonFor(vehicle, gravity));
+    lowlevel::BodyrateLoop loop(vehicle, params, gravity);
+
+    node::Node bus("sdlqr-lowlevel", options);
+    node::Counters& counters = bus.counters();
+    std::array<node::Counters::Id, lowlevel::kImuRejectCount> imu_reject_ids{};
+    for (int i = 1; i < lowlevel::kImuRejectCount; ++i) {
+      imu_reject_ids[i] = counters.add(std::string("reject.imu.") + toString(static_cast<lowlevel::ImuReject>(i)));
+    }
+    std::array<node::Counters::Id, lowlevel::kRateCommandRejectCount> rate_reject_ids{};
+    for (int i = 1; i < lowlevel::kRateCommandRejectCount; ++i) {
+      rate_reject_ids[i] =
+          counters.add(std::string("reject.rate_cmd.") + toString(static_cast<lowlevel::RateCommandReject>(i)));
+    }
+    const auto command_reject_id = counters.add("reject.command.unknown");
+    const auto mass_reject_id = counters.add("reject.params.mass");
+    const lowlevel::LowlevelCounters& loop_counters = loop.counters();
+    std::array<EventCounter, 8> events{{
+        {counters.add("imu.resyncs"), &loop_counters.imu_resyncs},
+        {counters.add("arm.refused"), &loop_counters.arm_refused},
+        {counters.add("failsafe.entries"), &loop_counters.failsafe_entries},
+        {counters.add("failsafe.recoveries"), &loop_counters.failsafe_recoveries},
+        {counters.add("failsafe.touchdowns"), &loop_counters.failsafe_touchdowns},
+        {counters.add("disarm.auto"), &loop_counters.auto_disarms},
+        {counters.add("mixer.saturated_steps"), &loop_counters.saturated_steps},
+        {counters.add("output.nonfinite"), &loop_counters.nonfinite_outputs},
+    }};
+
+    motor_cmd_t motor_msg;
+    bus.subscribe<imu_t>(channel::kImu, [&](const imu_t& msg) {
+      const MotorCommand command = loop.step(node::fromLcm(msg));
+      const lowlevel::ImuReject reason = loop.lastImuReject();
+      if (reason != lowlevel::ImuReject::kNone) {
+        bus.countRejected(imu_reject_ids[static_cast<size_t>(reason)]);
+        return;
+      }
+      motor_msg = node::toLcm(command);
+      bus.publish(channel::kMotorCommand, motor_msg);
+      bus.setSimTime(command.utime);
+      for (EventCounter& event : events) {
+        if (*event.value != event.reported) {
+          counters.increment(event.id, *event.value - event.reported);
+          event.reported = *event.value;
+        }
+      }
+      bus.setState(command.mode == MotorMode::kFailsafe ? node::ProcessState::kFailsafe : node::ProcessState::kRunning);
+    }, 64);
+    bus.subscribe<rate_cmd_t>(channel::kRateCommand, [&](const rate_cmd_t& msg) {
+      const lowlevel::RateCommandReject reason = loop.setRateCommand(node::fromLcm(msg));
+      if (reason != lowlevel::RateCommandReject::kNone) bus.countRejected(rate_reject_ids[static_cast<size_t>(reason)]);
+    }, 1);
+    bus.subscribe<command_t>(channel::kCommand, [&](const command_t& msg) {
+      const Command command = node::fromLcm(msg);
+      if (command.command < CommandType::kArm || command.command > CommandType::kLand) {
+        bus.countRejected(command_reject_id);
+        return;
+      }
+      loop.handleCommand(command);  // a refused arm is counted by the loop ("arm.refused")
+    }, 16);
+    bus.subscribe<params_t>(channel::kParams, [&](const params_t& msg) {
+      const ParamsUpdate update = node::fromLcm(msg);
+      if ((update.field_mask & ParamsUpdate::kMass) != 0 && !loop.setMass(update.mass)) bus.countRejected(mass_reject_id);
+    }, 16);
+
+    while (bus.spin(100)) {
+    }
+    bus.shutdown();
+    return 0;
+  });
+}
