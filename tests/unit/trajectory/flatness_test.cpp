@@ -1,0 +1,164 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include "sdlqr/common/model.hpp"
+#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/trajectory/flatness.hpp"
+#include "sdlqr/trajectory/paper_cases.hpp"
+
+namespace sdlqr::trajectory {
+namespace {
+
+constexpr double kGravity = 9.81;
+
+// Flies the feed-forward inputs open loop through the paper's model (RK4, inputs taken from the
+// flat map at each stage time) and returns the largest position error over [t0, t0 + span].
+double openLoopDrift(const MinSnapTrajectory& trajectory, double t0, double span, double* attitude_error = nullptr) {
+  const double h = 1e-3;
+  auto input = [&](double t) { return flatToReference(trajectory.evaluate(t), kGravity).u; };
+  State x = flatToReference(trajectory.evaluate(t0), kGravity).x;
+  double worst = 0.0;
+  double worst_attitude = 0.0;
+  const int steps = static_cast<int>(std::lround(span / h));
+  for (int i = 0; i < steps; ++i) {
+    const double t = t0 + i * h;
+    const State k1 = dynamics(x, input(t), kGravity);
+    const State k2 = dynamics(x + 0.5 * h * k1, input(t + 0.5 * h), kGravity);
+    const State k3 = dynamics(x + 0.5 * h * k2, input(t + 0.5 * h), kGravity);
+    const State k4 = dynamics(x + h * k3, input(t + h), kGravity);
+    x += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+    orientation(x).normalize();
+    const State reference = flatToReference(trajectory.evaluate(t + h), kGravity).x;
+    worst = std::max(worst, (position(x) - position(reference)).norm());
+    worst_attitude = std::max(worst_attitude, quat::boxMinus(orientation(x), orientation(reference)).norm());
+  }
+  if (attitude_error) *attitude_error = worst_attitude;
+  return worst;
+}
+
+TEST(Flatness, FeedForwardReproducesTheSlowPaperTrajectoryOpenLoop) {
+  const MinSnapTrajectory slow = paperMinSnapSlow(TrajectoryParams{});
+  double attitude = 0.0;
+  const double drift = openLoopDrift(slow, 0.0, 5.0, &attitude);
+  std::cout << "  slow (1 m/s): open-loop position drift over 5 s " << drift * 1e3 << " mm, attitude "
+            << attitude << " rad\n";
+  EXPECT_LT(drift, 0.01);
+  RecordProperty("slow_drift_m", std::to_string(drift));
+}
+
+TEST(Flatness, FeedForwardReproducesTheFastPaperTrajectoryOpenLoop) {
+  const MinSnapTrajectory fast = paperMinSnapFast(TrajectoryParams{});
+  double attitude = 0.0;
+  const double drift = openLoopDrift(fast, 0.0, 5.0, &attitude);
+  // Over the middle of the flight too, where speed and body rates are largest.
+  const double drift_middle = openLoopDrift(fast, 0.5 * fast.duration() - 2.5, 5.0);
+  std::cout << "  fast (3 m/s): open-loop position drift over 5 s from the start " << drift * 1e3
+            << " mm (attitude " << attitude << " rad), mid-flight " << drift_middle * 1e3 << " mm\n";
+  RecordProperty("fast_drift_m", std::to_string(std::max(drift, drift_middle)));
+  EXPECT_LT(drift, 0.01);
+  EXPECT_LT(drift_middle, 0.01);
+}
+
+TEST(Flatness, YawRateFeedForwardIsExactToo) {
+  // A turning heading exercises omega_z, which the paper's trajectories (fixed yaw) do not.
+  std::vector<Waypoint> waypoints = paperWaypoints(1.0);
+  const double yaws[] = {0.0, 1.5, 3.0, -1.5};
+  for (int j = 0; j < 4; ++j) {
+    waypoints[j].yaw = yaws[j];
+    waypoints[j].has_yaw = true;
+  }
+  MinSnapOptions options;
+  options.v_max = 2.0;
+  options.periodic = true;
+  const MinSnapTrajectory lap = generateMinSnap(waypoints, options);
+  double attitude = 0.0;
+  const double drift = openLoopDrift(lap, 0.0, 5.0, &attitude);
+  std::cout << "  turning heading (2 m/s, periodic): drift over 5 s " << drift * 1e3 << " mm, attitude " << attitude
+            << " rad\n";
+  EXPECT_LT(drift, 0.01);
+  EXPECT_LT(attitude, 1e-4);
+}
+
+TEST(Flatness, AttitudeAndThrustMatchAccelerationPlusGravity) {
+  std::vector<Waypoint> waypoints = paperWaypoints(1.0);
+  for (int j = 0; j < 4; ++j) {
+    waypoints[j].yaw = 0.7 * j;
+    waypoints[j].has_yaw = true;
+  }
+  MinSnapOptions options;
+  options.v_max = 3.0;
+  const MinSnapTrajectory trajectory = generateMinSnap(waypoints, options);
+  for (double t = 0.0; t < trajectory.duration(); t += 0.05) {
+    const FlatOutput flat = trajectory.evaluate(t);
+    const FlatReference ref = flatToReference(flat, kGravity);
+    ASSERT_FALSE(ref.singular);
+    const Vec3 thrust_vector = flat.acceleration + Vec3(0.0, 0.0, kGravity);
+    EXPECT_NEAR(ref.u[kThrust], thrust_vector.norm(), 1e-12);
+    EXPECT_LT((ref.u[kThrust] * quat::bodyZ(orientation(ref.x)) - thrust_vector).norm(), 1e-12);
+    EXPECT_NEAR(std::remainder(quat::yaw(orientation(ref.x)) - flat.yaw, 2 * M_PI), 0.0, 1e-12);
+    EXPECT_NEAR(orientation(ref.x).norm(), 1.0, 1e-14);
+    EXPECT_LT((position(ref.x) - flat.position).norm(), 1e-15);
+    EXPECT_LT((velocity(ref.x) - flat.velocity).norm(), 1e-15);
+  }
+}
+
+TEST(Flatness, BodyRatesMatchTheAttitudeDerivative) {
+  // q' = 1/2 q (x) [0, omega]: compare with a central difference of the flat attitude.
+  std::vector<Waypoint> waypoints = paperWaypoints(1.0);
+  for (int j = 0; j < 4; ++j) {
+    waypoints[j].yaw = -0.9 * j;
+    waypoints[j].has_yaw = true;
+  }
+  MinSnapOptions options;
+  options.v_max = 3.0;
+  const MinSnapTrajectory trajectory = generateMinSnap(waypoints, options);
+  const double h = 1e-5;
+  double worst = 0.0;
+  for (double t = 0.1; t < trajectory.duration() - 0.1; t += 0.1) {
+    const Quat before = orientation(flatToReference(trajectory.evaluate(t - h), kGravity).x);
+    const Quat after = orientation(flatToReference(trajectory.evaluate(t + h), kGravity).x);
+    const Vec3 measured = quat::boxMinus(after, before) / (2.0 * h);
+    const Vec3 omega = bodyRate(flatToReference(trajectory.evaluate(t), kGravity).u);
+    worst = std::max(worst, (measured - omega).norm());
+  }
+  std::cout << "  largest body-rate error against the attitude's finite difference " << worst << " rad/s\n";
+  EXPECT_LT(worst, 1e-6);
+}
+
+TEST(Flatness, HoverIsLevelWithHoverThrust) {
+  FlatOutput hover;
+  hover.position = Vec3(1, 2, 3);
+  hover.yaw = 0.4;
+  const FlatReference ref = flatToReference(hover, kGravity);
+  EXPECT_NEAR(ref.u[kThrust], kGravity, 1e-15);
+  EXPECT_LT(bodyRate(ref.u).norm(), 1e-15);
+  EXPECT_LT((orientation(ref.x) - quat::fromYaw(0.4)).norm(), 1e-15);
+}
+
+TEST(Flatness, FreeFallIsFlaggedSingular) {
+  FlatOutput falling;
+  falling.acceleration = Vec3(0.0, 0.0, -kGravity);
+  falling.jerk = Vec3(1.0, 0.0, 0.0);
+  const FlatReference ref = flatToReference(falling, kGravity);
+  EXPECT_TRUE(ref.singular);
+  EXPECT_TRUE(ref.x.allFinite());
+  EXPECT_TRUE(ref.u.allFinite());
+}
+
+TEST(Flatness, QuaternionFromRotationInvertsRotationMatrix) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> n(0.0, 1.0);
+  for (int i = 0; i < 100; ++i) {
+    Quat q(n(rng), n(rng), n(rng), n(rng));
+    q.normalize();
+    const Quat back = quaternionFromRotation(quat::rotationMatrix(q));
+    EXPECT_LT((back - quat::sameHemisphere(q, back)).norm(), 1e-12);
+    EXPECT_GE(back[0], 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace sdlqr::trajectory
