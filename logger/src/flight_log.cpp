@@ -3,6 +3,7 @@
 #include <unordered_map>
 
 #include "lcm_decode.hpp"
+#include "sdlqr/logger/decode.hpp"
 #include "sdlqr/common/channels.hpp"
 #include "sdlqr/logger/channel_types.hpp"
 #include "sdlqr/logger/log_reader.hpp"
@@ -19,16 +20,24 @@ auto toPlain(const LcmType& m) {
 HeartbeatRecord toPlain(const heartbeat_t& m) { return detail::toHeartbeatRecord(m); }
 
 template <class LcmType, class Plain>
-void decodeInto(const LogEvent& event, Series<Plain>& series, ChannelTimeline& timeline) {
+bool decodeAs(const LogEvent& event, Plain* out) {
   LcmType message;
-  if (!detail::decodeEvent(event, &message)) {
+  if (!detail::decodeEvent(event, &message)) return false;
+  *out = toPlain(message);
+  return true;
+}
+
+template <class LcmType, class Plain>
+void decodeInto(const LogEvent& event, Series<Plain>& series, ChannelTimeline& timeline) {
+  Plain message;
+  if (!decodeAs<LcmType>(event, &message)) {
     ++series.decode_failures;
     ++timeline.decode_failures;
     return;
   }
-  series.messages.push_back(toPlain(message));
-  series.receive_utime.push_back(event.receive_utime);
   timeline.addDecoded(event.receive_utime, message.utime, message.seq);
+  series.messages.push_back(std::move(message));
+  series.receive_utime.push_back(event.receive_utime);
 }
 
 void decode(MessageType type, const LogEvent& e, FlightLog& log, ChannelTimeline& t) {
@@ -50,6 +59,20 @@ void decode(MessageType type, const LogEvent& e, FlightLog& log, ChannelTimeline
 }
 
 }  // namespace
+
+bool decodeMessage(const LogEvent& e, ImuSample* out) { return decodeAs<imu_t>(e, out); }
+bool decodeMessage(const LogEvent& e, VioPose* out) { return decodeAs<vio_pose_t>(e, out); }
+bool decodeMessage(const LogEvent& e, StateEstimate* out) { return decodeAs<state_estimate_t>(e, out); }
+bool decodeMessage(const LogEvent& e, RateCommand* out) { return decodeAs<rate_cmd_t>(e, out); }
+bool decodeMessage(const LogEvent& e, MotorCommand* out) { return decodeAs<motor_cmd_t>(e, out); }
+bool decodeMessage(const LogEvent& e, GainSet* out) { return decodeAs<gains_t>(e, out); }
+bool decodeMessage(const LogEvent& e, Reference* out) { return decodeAs<reference_t>(e, out); }
+bool decodeMessage(const LogEvent& e, Trajectory* out) { return decodeAs<trajectory_t>(e, out); }
+bool decodeMessage(const LogEvent& e, Disturbance* out) { return decodeAs<disturbance_t>(e, out); }
+bool decodeMessage(const LogEvent& e, ParamsUpdate* out) { return decodeAs<params_t>(e, out); }
+bool decodeMessage(const LogEvent& e, Command* out) { return decodeAs<command_t>(e, out); }
+bool decodeMessage(const LogEvent& e, HeartbeatRecord* out) { return decodeAs<heartbeat_t>(e, out); }
+bool decodeMessage(const LogEvent& e, SimTruth* out) { return decodeAs<sim_truth_t>(e, out); }
 
 FlightLog FlightLog::load(const std::string& path, const std::string& vehicle) {
   FlightLog log;

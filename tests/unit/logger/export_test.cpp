@@ -10,6 +10,7 @@
 #include "sdlqr/common/channels.hpp"
 #include "sdlqr/logger/channel_types.hpp"
 #include "sdlqr/logger/csv.hpp"
+#include "sdlqr/logger/decode.hpp"
 #include "sdlqr/logger/flight_log.hpp"
 #include "sdlqr/logger/generated/lcm_csv_rows.hpp"
 #include "sdlqr/logger/log_export.hpp"
@@ -254,6 +255,29 @@ TEST(FlightLog, DecodesOneVehicleIntoPlainStructs) {
   EXPECT_DOUBLE_EQ(metrics.gains.at("QUAD1/GAINS").solve_us.mean, 61.0);
   EXPECT_EQ(metrics.clock_channel, "QUAD1/IMU");
   EXPECT_DOUBLE_EQ(metrics.real_time_factor, 1.0);
+}
+
+TEST(LogReader, StreamsEventsDecodedOneByOne) {
+  ScratchDir dir("stream");
+  writeLog(dir / "f.lcmlog", makeFlight().events);
+  LogReader reader((dir / "f.lcmlog").string());
+  LogEvent event;
+  int imu = 0;
+  int failures = 0;
+  while (reader.next(&event)) {
+    if (event.channel != "QUAD1/IMU") continue;
+    ImuSample sample;
+    GainSet wrong;
+    if (decodeMessage(event, &sample)) {
+      EXPECT_EQ(sample.seq, imu);
+      EXPECT_FALSE(decodeMessage(event, &wrong)) << "an imu_t must not decode as gains_t";
+      ++imu;
+    } else {
+      ++failures;
+    }
+  }
+  EXPECT_EQ(imu, 200);
+  EXPECT_EQ(failures, 1);
 }
 
 TEST(FlightLog, UnprefixedVehicleIsTheDefault) {
