@@ -47,18 +47,26 @@ bool peekUtime(const std::string& channel, const void* data, uint32_t size, int6
   return true;
 }
 
+void createFolder(const std::string& option, const std::filesystem::path& folder) {
+  if (folder.empty()) return;
+  std::error_code error;
+  std::filesystem::create_directories(folder, error);
+  if (error) throw std::invalid_argument(option + " '" + folder.string() + "': " + error.message());
+}
+
+// --out names the file (a launcher may still pass --scenario: it is checked and reported);
+// otherwise the name is <dir>/<date>-<scenario>.lcmlog.
 std::string logPath(const std::string& out, const std::string& dir, const std::string& scenario) {
-  if (!out.empty()) {
-    if (!dir.empty() || !scenario.empty()) throw std::invalid_argument("--out excludes --dir and --scenario");
-    return out;
-  }
   const std::string name = scenario.empty() ? "flight" : scenario;
   const std::string reason = sdlqr::logger::invalidScenarioReason(name);
   if (!reason.empty()) throw std::invalid_argument("--scenario: " + reason);
+  if (!out.empty()) {
+    if (!dir.empty()) throw std::invalid_argument("--out excludes --dir");
+    createFolder("--out", std::filesystem::path(out).parent_path());
+    return out;
+  }
   const std::string folder = dir.empty() ? "." : dir;
-  std::error_code error;
-  std::filesystem::create_directories(folder, error);
-  if (error) throw std::invalid_argument("--dir '" + folder + "': " + error.message());
+  createFolder("--dir", folder);
   const std::time_t now = std::time(nullptr);
   std::tm local{};
   localtime_r(&now, &local);
@@ -100,7 +108,7 @@ int runRecord(int argc, const char* const* argv) {
                           "Records every LCM channel (or those matching --channels) to a standard LCM event log,\n"
                           "readable by lcm-logplayer. Flushes at least every 0.2 s; stops on SIGINT/SIGTERM or\n"
                           "after --duration, with everything written. Never overwrites a file.");
-  parser.addOption("--out", &out, "FILE", "log file to create");
+  parser.addOption("--out", &out, "FILE", "log file to create (its folder is created if missing)");
   parser.addOption("--dir", &dir, "DIR", "folder for <YYYYmmdd-HHMMSS>-<scenario>.lcmlog (default: .)");
   parser.addOption("--scenario", &scenario, "NAME", "scenario part of the file name (default: flight)");
   parser.addOption("--channels", &channels, "REGEX",
@@ -136,7 +144,8 @@ int runRecord(int argc, const char* const* argv) {
       },
       kRawQueueCapacity);
   node.setState(sdlqr::node::ProcessState::kRunning);
-  std::cout << kProgram << ": recording '" << pattern << "' to " << recorder.path() << std::endl;
+  std::cout << kProgram << ": recording '" << pattern << "'" << (scenario.empty() ? "" : " (scenario " + scenario + ")")
+            << " to " << recorder.path() << std::endl;
 
   const auto start = std::chrono::steady_clock::now();
   auto next_stats = start;

@@ -2,7 +2,8 @@
 # Integration test of sdlqr-logger over real LCM multicast. Run inside a private network
 # namespace (see CMakeLists.txt): record while a peer publishes, stop with SIGINT and find every
 # message; kill -9 mid-recording and find everything published more than 1 s before the kill;
-# refuse to overwrite; export the logs (and refuse missing or foreign files).
+# refuse to overwrite; export the logs (and refuse missing or foreign files); lcm-logplayer plays
+# what was recorded.
 #
 # usage: logger_record_test.sh SDLQR_LOGGER LOGGER_TEST_PEER WORK_DIR
 set -u
@@ -88,15 +89,15 @@ echo "not a log" >"$WORK/foreign.lcmlog"
 [ $? -eq 2 ] || fail "foreign file: exit code not 2"
 cat "$WORK/missing.err" "$WORK/foreign.err"
 
-echo "== 5. lcm-logplayer replays a recorded log; recording the replay gives every message again"
+echo "== 5. lcm-logplayer replays a recorded log; recording the replay (stopped by SIGTERM) gives every message again"
 if command -v lcm-logplayer >/dev/null && [ -n "$LOG" ]; then
   "$LOGGER" --out "$WORK/replayed.lcmlog" >"$WORK/replay.out" 2>&1 &
   LOGGER_PID=$!
   wait_ready "$WORK/replay.out"
   lcm-logplayer --speed 4 "$LOG" || fail "lcm-logplayer could not play $LOG"
   sleep 0.5
-  kill -INT $LOGGER_PID
-  wait $LOGGER_PID || fail "logger failed while recording the replay"
+  kill -TERM $LOGGER_PID
+  wait $LOGGER_PID || fail "logger did not end cleanly on SIGTERM"
   "$PEER" check "$WORK/replayed.lcmlog" --published "$WORK/sigint.published" || fail "replayed log incomplete"
 else
   echo "lcm-logplayer not installed: skipped"
