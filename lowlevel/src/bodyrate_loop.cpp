@@ -157,6 +157,8 @@ MotorCommand BodyrateLoop::step(const ImuSample& sample) {
   const double leak_time = status_.mode == MotorMode::kFailsafe ? params_.failsafe.velocity_leak_time
                                                                : params_.attitude_filter.velocity_leak_time;
   attitude_filter_.update(sample.gyro, sample.accel, dt, on_ground_unarmed_or_idle, leak_time);
+  // After an impact the vehicle is not moving vertically, whatever the clipped spike integrated to.
+  if (ground_detector_.impact()) attitude_filter_.stopVertical();
   const Vec3 rate = attitude_filter_.bodyRate(sample.gyro);
   status_.command_age = command_utime_ == kNoTime
                             ? std::numeric_limits<double>::infinity()

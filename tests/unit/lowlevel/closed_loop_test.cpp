@@ -188,6 +188,23 @@ TEST(Failsafe, SilentRateCommandsLevelDescendAndDisarm) {
   }
 }
 
+TEST(Failsafe, DisarmsPromptlyWhenTheTouchdownSpikeClips) {
+  // A clipped spike integrates to less than the speed lost at touchdown; the velocity estimate
+  // would keep "descending" on the ground for the whole leak time without the impact reset.
+  ImuErrors imu = realisticImu(13);
+  imu.accel_range = 20.0;
+  FlightHarness h(imu);
+  h.holdFor(Vec3::Zero(), 2.0);
+  h.command(CommandType::kTakeoff);
+  h.holdFor(Vec3(0.0, 0.0, 2.0), 5.0);
+  const FailsafeFlight f = flyFailsafe(h, h.utime - 9 * kImuPeriodUs, 20.0);
+  report("clipping accelerometer", f);
+  EXPECT_LT(f.touchdown_speed, 1.0);
+  EXPECT_EQ(f.final_mode, MotorMode::kDisarmed);
+  EXPECT_GE(f.disarm_delay, 0.0);
+  EXPECT_LE(f.disarm_delay, 1.0);
+}
+
 TEST(Failsafe, LevelsAVehicleLeftTiltedAndRolling) {
   FlightHarness h(realisticImu(7));
   h.holdFor(Vec3::Zero(), 2.0);

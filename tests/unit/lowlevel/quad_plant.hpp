@@ -21,6 +21,7 @@ struct ImuErrors {
   double accel_std = 0.0;         // [m/s^2] per sample
   Vec3 gyro_bias = Vec3::Zero();  // [rad/s]
   Vec3 accel_bias = Vec3::Zero(); // [m/s^2]
+  double accel_range = 156.9;     // [m/s^2] readings clip here per axis (16 g), as real sensors do
   unsigned seed = 1;
 };
 
@@ -58,7 +59,9 @@ class QuadPlant {
     sample.utime = utime;
     sample.seq = seq;
     sample.gyro = body_rate + imu_errors_.gyro_bias + noise(imu_errors_.gyro_std);
-    sample.accel = specific_force_ + imu_errors_.accel_bias + noise(imu_errors_.accel_std);
+    sample.accel = (specific_force_ + imu_errors_.accel_bias + noise(imu_errors_.accel_std))
+                       .cwiseMax(-imu_errors_.accel_range)
+                       .cwiseMin(imu_errors_.accel_range);
     return sample;
   }
 

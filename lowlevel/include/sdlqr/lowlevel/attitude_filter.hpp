@@ -43,6 +43,9 @@ class AttitudeFilter {
   double verticalAccelOffset() const { return vertical_accel_offset_; }
   double verticalVelocity() const { return vertical_velocity_; }  // [m/s] world z, up positive
   double verticalAcceleration() const { return vertical_acceleration_; }
+  // The vehicle hit something and stopped: a clipped accelerometer spike does not integrate to
+  // the velocity it lost, so the caller says so explicitly.
+  void stopVertical() { vertical_velocity_ = 0.0; }
   void reset();
 
  private:
