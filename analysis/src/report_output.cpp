@@ -1,0 +1,197 @@
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "sdlqr/analysis/flight_report.hpp"
+#include "sdlqr/logger/json_writer.hpp"
+
+namespace sdlqr::analysis {
+
+namespace {
+
+void writeDistribution(logger::JsonWriter& json, const char* name, const logger::Distribution& d) {
+  json.key(name);
+  json.beginObject();
+  json.memberInt("count", d.count);
+  json.member("mean", d.mean);
+  json.member("min", d.min);
+  json.member("median", d.median);
+  json.member("p99", d.p99);
+  json.member("max", d.max);
+  json.endObject();
+}
+
+void writeVec3(logger::JsonWriter& json, const char* name, const Vec3& v) {
+  json.key(name);
+  json.beginArray();
+  for (int i = 0; i < 3; ++i) json.number(v[i]);
+  json.endArray();
+}
+
+std::string format(const char* fmt, double value) {
+  if (!std::isfinite(value)) return "never";
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, fmt, value);
+  return buffer;
+}
+
+}  // namespace
+
+void writeJson(const FlightReport& r, std::ostream& out) {
+  logger::JsonWriter json(out);
+  json.beginObject();
+  json.member("scenario", r.scenario);
+  json.memberBool("passed", r.passed());
+  json.member("flight_start_s", r.flight_start);
+  json.member("flight_end_s", r.flight_end);
+  json.key("setpoints");
+  json.beginArray();
+  for (const SetpointWindow& w : r.setpoints) {
+    json.beginObject();
+    json.member("label", w.label);
+    json.memberBool("jump", w.is_jump);
+    json.member("start_s", w.start);
+    json.member("end_s", w.end);
+    writeVec3(json, "from_m", w.from);
+    writeVec3(json, "to_m", w.to);
+    json.member("size_m", w.size);
+    json.member("settle_time_s", w.settle_time);
+    json.member("overshoot", w.overshoot);
+    json.member("steady_error_m", w.steady_error);
+    json.member("max_error_after_settle_m", w.max_error_after_settle);
+    json.endObject();
+  }
+  json.endArray();
+  json.key("pulls");
+  json.beginArray();
+  for (const PullWindow& p : r.pulls) {
+    json.beginObject();
+    json.member("label", p.label);
+    json.member("start_s", p.start);
+    json.member("release_s", p.release);
+    writeVec3(json, "force_n", p.force);
+    writeVec3(json, "setpoint_m", p.setpoint);
+    json.member("max_deviation_m", p.max_deviation);
+    json.member("return_time_s", p.return_time);
+    json.endObject();
+  }
+  json.endArray();
+  json.key("estimator");
+  json.beginObject();
+  json.memberInt("hover_samples", r.estimator.samples);
+  json.member("position_rms_m", r.estimator.position_rms);
+  json.member("attitude_rms_deg", r.estimator.attitude_rms_deg);
+  json.member("position_rms_all_m", r.estimator.position_rms_all);
+  json.member("attitude_rms_all_deg", r.estimator.attitude_rms_deg_all);
+  json.member("position_max_all_m", r.estimator.position_max_all);
+  json.endObject();
+  json.key("rates_hz");
+  json.beginObject();
+  json.member("IMU", r.imu_rate_hz);
+  json.member("STATE_EST", r.state_est_rate_hz);
+  json.member("RATE_CMD", r.rate_cmd_rate_hz);
+  json.member("GAINS", r.gains_rate_hz);
+  json.endObject();
+  writeDistribution(json, "gains_solve_us", r.solve_us);
+  writeDistribution(json, "gains_iterations", r.iterations);
+  writeDistribution(json, "rate_cmd_period_ms", r.rate_cmd_period_ms);
+  writeDistribution(json, "rate_cmd_jitter_ms", r.rate_cmd_jitter_ms);
+  writeDistribution(json, "state_est_to_rate_cmd_us", r.state_to_command_us);
+  json.key("processes");
+  json.beginArray();
+  for (const ProcessLoad& p : r.processes) {
+    json.beginObject();
+    json.member("process", p.process);
+    json.member("cpu_percent_mean", p.cpu_percent_mean);
+    json.member("cpu_percent_max", p.cpu_percent_max);
+    json.memberInt("rejected", p.rejected);
+    json.memberInt("dropped", p.dropped);
+    json.memberInt("deadline_misses", p.deadline_misses);
+    json.memberInt("errors", p.errors);
+    json.endObject();
+  }
+  json.endArray();
+  json.member("stack_cpu_percent", r.stack_cpu_percent);
+  json.memberInt("nonfinite_messages", r.nonfinite);
+  json.member("max_tilt_deg", r.max_tilt_deg);
+  json.member("touchdown_speed_mps", r.touchdown_speed);
+  json.memberBool("crashed", r.crashed);
+  json.key("checks");
+  json.beginArray();
+  for (const Check& c : r.checks) {
+    json.beginObject();
+    json.member("name", c.name);
+    json.member("value", c.value);
+    json.member("limit", c.limit);
+    json.member("rule", c.upper ? "<=" : ">=");
+    json.memberBool("pass", c.pass);
+    json.endObject();
+  }
+  json.endArray();
+  json.endObject();
+  out << "\n";
+}
+
+void writeSummary(const FlightReport& r, std::ostream& out) {
+  int passed = 0;
+  for (const Check& c : r.checks) passed += c.pass ? 1 : 0;
+  char line[256];
+  std::snprintf(line, sizeof line, "scenario %s: %s (%d of %zu checks pass)\n", r.scenario.c_str(),
+                r.passed() ? "PASS" : "FAIL", passed, r.checks.size());
+  out << line;
+  if (!r.setpoints.empty()) {
+    out << "  setpoint            size    settle (<5 cm)  overshoot  steady error\n";
+    for (const SetpointWindow& w : r.setpoints) {
+      std::snprintf(line, sizeof line, "  %-18s %5.2f m  %-14s  %7s  %s\n", w.label.c_str(), w.size,
+                    format("%.2f s", w.settle_time).c_str(), w.is_jump ? format("%.1f %%", 100.0 * w.overshoot).c_str() : "-",
+                    format("%.1f cm", 100.0 * w.steady_error).c_str());
+      out << line;
+    }
+  }
+  for (const PullWindow& p : r.pulls) {
+    std::snprintf(line, sizeof line, "  %-18s %.1f N for %.2f s: pushed %.2f m away, back within 10 cm after %s\n",
+                  p.label.c_str(), p.force.norm(), p.release - p.start, p.max_deviation,
+                  format("%.2f s", p.return_time).c_str());
+    out << line;
+  }
+  std::snprintf(line, sizeof line, "  estimator (hover): position %s RMS, attitude %s RMS (whole flight %s, %s)\n",
+                format("%.2f cm", 100.0 * r.estimator.position_rms).c_str(),
+                format("%.2f deg", r.estimator.attitude_rms_deg).c_str(),
+                format("%.2f cm", 100.0 * r.estimator.position_rms_all).c_str(),
+                format("%.2f deg", r.estimator.attitude_rms_deg_all).c_str());
+  out << line;
+  std::snprintf(line, sizeof line, "  rates: IMU %.1f Hz, STATE_EST %.1f Hz, RATE_CMD %.1f Hz, GAINS %.2f Hz\n",
+                r.imu_rate_hz, r.state_est_rate_hz, r.rate_cmd_rate_hz, r.gains_rate_hz);
+  out << line;
+  std::snprintf(line, sizeof line, "  gain solve: median %.1f us, p99 %.1f us, max %.1f us; %g doublings (median)\n",
+                r.solve_us.median, r.solve_us.p99, r.solve_us.max, r.iterations.median);
+  out << line;
+  std::snprintf(line, sizeof line, "  controller period (sim time): median %.2f ms, |jitter| p99 %.2f ms\n",
+                r.rate_cmd_period_ms.median, r.rate_cmd_jitter_ms.p99);
+  out << line;
+  if (r.state_to_command_us.count > 0) {
+    std::snprintf(line, sizeof line, "  STATE_EST -> RATE_CMD at the recorder: median %.0f us, p99 %.0f us\n",
+                  r.state_to_command_us.median, r.state_to_command_us.p99);
+    out << line;
+  }
+  if (!r.processes.empty()) {
+    out << "  CPU (% of one core, airborne mean):";
+    for (const ProcessLoad& p : r.processes) {
+      std::snprintf(line, sizeof line, " %s %.1f", p.process.c_str(), p.cpu_percent_mean);
+      out << line;
+    }
+    std::snprintf(line, sizeof line, "; flight stack %.1f\n", r.stack_cpu_percent);
+    out << line;
+  }
+  std::snprintf(line, sizeof line, "  max tilt %.1f deg, touchdown %.2f m/s%s, non-finite messages %lld\n", r.max_tilt_deg,
+                r.touchdown_speed, r.crashed ? ", CRASHED" : "", static_cast<long long>(r.nonfinite));
+  out << line;
+  for (const Check& c : r.checks) {
+    if (c.pass) continue;
+    std::snprintf(line, sizeof line, "  FAILED %s: %.4g (limit %s %.4g)\n", c.name.c_str(), c.value,
+                  c.upper ? "<=" : ">=", c.limit);
+    out << line;
+  }
+}
+
+}  // namespace sdlqr::analysis

@@ -1,0 +1,239 @@
+#include "sdlqr/mission/scenario.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace sdlqr::mission {
+
+namespace {
+
+std::string directoryOf(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
+}
+
+std::string resolve(const std::string& base_dir, const std::string& path) {
+  if (path.empty() || path[0] == '/') return path;
+  return base_dir + "/" + path;
+}
+
+Command parseCommand(const ConfigReader& event, const std::string& name) {
+  Command command;
+  if (name == "arm") {
+    command.command = CommandType::kArm;
+  } else if (name == "disarm") {
+    command.command = CommandType::kDisarm;
+  } else if (name == "takeoff") {
+    command.command = CommandType::kTakeoff;
+    double height = 1.0;
+    event.read("height", height);
+    if (!(height > 0.0 && height <= 20.0)) throw ConfigError(event.keyPath("height"), "must be in (0, 20] m");
+    command.position = Vec3(0.0, 0.0, height);
+  } else if (name == "goto") {
+    command.command = CommandType::kGoto;
+    if (!event.has("position")) throw ConfigError(event.keyPath("position"), "goto needs a position [x, y, z]");
+    event.read("position", command.position);
+    event.read("yaw", command.yaw);
+  } else if (name == "land") {
+    command.command = CommandType::kLand;
+  } else {
+    throw ConfigError(event.keyPath("command"), "expected arm, disarm, takeoff, goto or land, got '" + name + "'");
+  }
+  return command;
+}
+
+Disturbance parseDisturbance(const ConfigReader& d) {
+  d.allowOnly({"force", "torque", "duration", "mode", "hold_position", "stiffness", "damping"});
+  Disturbance out;
+  d.read("force", out.force);
+  d.read("torque", out.torque);
+  d.read("duration", out.duration);
+  if (!(out.duration > 0.0 && out.duration <= 60.0)) throw ConfigError(d.keyPath("duration"), "must be in (0, 60] s");
+  if (out.force.norm() > 50.0) throw ConfigError(d.keyPath("force"), "magnitude above 50 N");
+  if (out.torque.norm() > 5.0) throw ConfigError(d.keyPath("torque"), "magnitude above 5 N m");
+  std::string mode = "force";
+  d.read("mode", mode);
+  if (mode == "hold") {
+    out.mode = DisturbanceMode::kHold;
+    if (!d.has("hold_position")) throw ConfigError(d.keyPath("hold_position"), "hold needs a position");
+    d.read("hold_position", out.hold_position);
+    out.hold_stiffness = 20.0;
+    out.hold_damping = 2.0;
+    d.read("stiffness", out.hold_stiffness);
+    d.read("damping", out.hold_damping);
+    if (!(out.hold_stiffness >= 0.0 && out.hold_stiffness <= 1000.0)) {
+      throw ConfigError(d.keyPath("stiffness"), "must be in [0, 1000] N/m");
+    }
+    if (!(out.hold_damping >= 0.0 && out.hold_damping <= 100.0)) {
+      throw ConfigError(d.keyPath("damping"), "must be in [0, 100] N s/m");
+    }
+  } else if (mode != "force") {
+    throw ConfigError(d.keyPath("mode"), "expected force or hold");
+  }
+  return out;
+}
+
+ParamsUpdate parseParams(const ConfigReader& p) {
+  p.allowOnly({"q_diag", "r_diag", "omega_max", "c_min", "c_max", "mass", "tracking"});
+  ParamsUpdate out;
+  if (p.has("q_diag") || p.has("r_diag")) {
+    if (!p.has("q_diag") || !p.has("r_diag")) throw ConfigError(p.path(), "q_diag and r_diag go together");
+    out.field_mask |= ParamsUpdate::kWeights;
+    p.read("q_diag", out.q_diag);
+    p.read("r_diag", out.r_diag);
+  }
+  if (p.has("omega_max") || p.has("c_min") || p.has("c_max")) {
+    if (!p.has("omega_max") || !p.has("c_min") || !p.has("c_max")) {
+      throw ConfigError(p.path(), "omega_max, c_min and c_max go together");
+    }
+    out.field_mask |= ParamsUpdate::kLimits;
+    p.read("omega_max", out.omega_max);
+    p.read("c_min", out.c_min);
+    p.read("c_max", out.c_max);
+  }
+  if (p.has("mass")) {
+    out.field_mask |= ParamsUpdate::kMass;
+    p.read("mass", out.mass);
+    if (!(out.mass > 0.0)) throw ConfigError(p.keyPath("mass"), "must be > 0");
+  }
+  if (p.has("tracking")) {
+    std::string tracking;
+    p.read("tracking", tracking);
+    if (tracking == "spatial") {
+      out.tracking = ReferenceMode::kSpatial;
+    } else if (tracking == "temporal") {
+      out.tracking = ReferenceMode::kTemporal;
+    } else {
+      throw ConfigError(p.keyPath("tracking"), "expected spatial or temporal");
+    }
+    out.field_mask |= ParamsUpdate::kTracking;
+  }
+  if (out.field_mask == 0) throw ConfigError(p.path(), "sets nothing");
+  return out;
+}
+
+TrajectoryRequest parseTrajectory(const ConfigReader& t, const std::string& base_dir) {
+  t.allowOnly({"generator", "csv", "laps", "tracking", "height_offset", "sample_dt"});
+  TrajectoryRequest out;
+  t.read("generator", out.generator);
+  if (t.has("csv")) {
+    t.read("csv", out.csv_path);
+    out.csv_path = resolve(base_dir, out.csv_path);
+    if (out.generator.empty()) out.generator = "csv";
+  }
+  if (out.generator != "minsnap_fast" && out.generator != "minsnap_slow" && out.generator != "ellipse" &&
+      out.generator != "csv") {
+    throw ConfigError(t.keyPath("generator"), "expected minsnap_fast, minsnap_slow, ellipse or csv");
+  }
+  if (out.generator == "csv" && out.csv_path.empty()) throw ConfigError(t.keyPath("csv"), "csv needs a file");
+  if (t.has("laps")) {
+    t.read("laps", out.laps);
+    if (out.laps < 1 || out.laps > 100) throw ConfigError(t.keyPath("laps"), "must be in [1, 100]");
+  }
+  std::string tracking = "spatial";
+  t.read("tracking", tracking);
+  if (tracking == "spatial") {
+    out.tracking = ReferenceMode::kSpatial;
+  } else if (tracking == "temporal") {
+    out.tracking = ReferenceMode::kTemporal;
+  } else {
+    throw ConfigError(t.keyPath("tracking"), "expected spatial or temporal");
+  }
+  if (t.has("height_offset")) {
+    t.read("height_offset", out.height_offset);
+    if (!(out.height_offset >= 0.0 && out.height_offset <= 50.0)) {
+      throw ConfigError(t.keyPath("height_offset"), "must be in [0, 50] m");
+    }
+  }
+  if (t.has("sample_dt")) {
+    t.read("sample_dt", out.sample_dt);
+    if (!(out.sample_dt >= 0.001 && out.sample_dt <= 1.0)) {
+      throw ConfigError(t.keyPath("sample_dt"), "must be in [0.001, 1] s");
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Scenario Scenario::load(const std::string& path) {
+  const YAML::Node root_node = loadYamlFile(path);
+  const ConfigReader root(root_node, "");
+  root.allowOnly({"name", "description", "vehicle", "seed", "duration", "rate", "events", "criteria"});
+  Scenario s;
+  s.path = path;
+  const std::string base_dir = directoryOf(path);
+  s.name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  if (s.name.size() > 5 && s.name.substr(s.name.size() - 5) == ".yaml") s.name.resize(s.name.size() - 5);
+  root.read("name", s.name);
+  for (char c : s.name) {
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) {
+      throw ConfigError("name", "use letters, digits, '_' or '-' only");
+    }
+  }
+  root.read("description", s.description);
+  std::string vehicle = "../quad255.yaml";
+  root.read("vehicle", vehicle);
+  s.vehicle_path = resolve(base_dir, vehicle);
+  root.read("seed", s.seed);
+  root.read("duration", s.duration);
+  if (!(s.duration > 0.0 && s.duration <= 3600.0)) throw ConfigError("duration", "must be in (0, 3600] s");
+  root.read("rate", s.rate);
+  if (!(s.rate > 0.0 && s.rate <= 100.0)) throw ConfigError("rate", "must be in (0, 100]");
+
+  if (root.has("events")) {
+    const YAML::Node events = root_node["events"];
+    if (!events.IsSequence()) throw ConfigError("events", "expected a list");
+    for (size_t i = 0; i < events.size(); ++i) {
+      const ConfigReader e(events[i], "events[" + std::to_string(i) + "]");
+      e.allowOnly({"at", "command", "height", "position", "yaw", "disturbance", "params", "trajectory", "label"});
+      ScenarioEvent event;
+      if (!e.has("at")) throw ConfigError(e.keyPath("at"), "every event needs a time");
+      e.read("at", event.at);
+      if (!(event.at >= 0.0 && event.at <= s.duration)) throw ConfigError(e.keyPath("at"), "must be in [0, duration]");
+      e.read("label", event.label);
+      const int kinds = (e.has("command") ? 1 : 0) + (e.has("disturbance") ? 1 : 0) + (e.has("params") ? 1 : 0) +
+                        (e.has("trajectory") ? 1 : 0);
+      if (kinds != 1) throw ConfigError(e.path(), "needs exactly one of command, disturbance, params, trajectory");
+      if (e.has("command")) {
+        std::string name;
+        e.read("command", name);
+        event.kind = ScenarioEvent::Kind::kCommand;
+        event.command = parseCommand(e, name);
+      } else if (e.has("disturbance")) {
+        event.kind = ScenarioEvent::Kind::kDisturbance;
+        event.disturbance = parseDisturbance(e.child("disturbance"));
+      } else if (e.has("params")) {
+        event.kind = ScenarioEvent::Kind::kParams;
+        event.params = parseParams(e.child("params"));
+      } else {
+        event.kind = ScenarioEvent::Kind::kTrajectory;
+        event.trajectory = parseTrajectory(e.child("trajectory"), base_dir);
+      }
+      s.events.push_back(event);
+    }
+  }
+  std::stable_sort(s.events.begin(), s.events.end(),
+                   [](const ScenarioEvent& a, const ScenarioEvent& b) { return a.at < b.at; });
+
+  if (root.has("criteria")) {
+    const YAML::Node criteria = root_node["criteria"];
+    if (!criteria.IsMap()) throw ConfigError("criteria", "expected a mapping of name: number");
+    const ConfigReader c(criteria, "criteria");
+    for (const auto& entry : criteria) {
+      const std::string key = entry.first.as<std::string>();
+      double value = 0.0;
+      c.read(key, value);
+      s.criteria[key] = value;
+    }
+  }
+  return s;
+}
+
+double Scenario::criterion(const std::string& key, double fallback) const {
+  const auto it = criteria.find(key);
+  return it == criteria.end() ? fallback : it->second;
+}
+
+}  // namespace sdlqr::mission
