@@ -81,6 +81,9 @@ int run(int argc, char** argv) {
 
   node::Node node("sdlqr-sim", options.process);
   auto& counters = node.counters();
+  // Counter ids indexed by fault value.
+  static_assert(static_cast<size_t>(sim::MotorCommandFault::kMode) < 8);
+  static_assert(static_cast<size_t>(sim::DisturbanceFault::kQueueFull) < 8);
   std::array<node::Counters::Id, 8> motor_reject{};
   for (sim::MotorCommandFault f : sim::kAllMotorCommandFaults) {
     motor_reject[static_cast<size_t>(f)] = counters.add(sim::counterName(f));
