@@ -220,7 +220,7 @@ struct ZohKernel {
 };
 
 template <int NX, int NU>
-__attribute__((target("avx2,fma"))) bool zohExponentialAvx2(const Block<NX, NX + NU, padded(NX + NU)>& m_top,
+SDLQR_AVX2_TARGET bool zohExponentialAvx2(const Block<NX, NX + NU, padded(NX + NU)>& m_top,
                                                               double norm, Block<NX, NX + NU, padded(NX + NU)>& out) {
   return ZohKernel<NX, NU>::run(m_top, norm, out);
 }
@@ -252,6 +252,7 @@ DiscreteSystem<NX, NU> discretizeZoh(const Eigen::Matrix<double, NX, NX>& A, con
   if (!std::isfinite(norm) || !std::isfinite(dt)) norm = std::numeric_limits<double>::quiet_NaN();
 
   DiscreteSystem<NX, NU> discrete;
+  const FlushSubnormals flush;
   const bool ok = std::isfinite(norm) && (cpuHasAvx2Fma() ? zohExponentialAvx2<NX, NU>(m_top, norm, result)
                                                           : zohExponentialBaseline<NX, NU>(m_top, norm, result));
   if (!ok) {

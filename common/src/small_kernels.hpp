@@ -9,6 +9,14 @@
 #include <cmath>
 #include <cstring>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <xmmintrin.h>
+#define SDLQR_SMALL_KERNELS_X86 1
+#define SDLQR_AVX2_TARGET __attribute__((target("avx2,fma")))
+#else
+#define SDLQR_AVX2_TARGET
+#endif
+
 #define SDLQR_SDA_INLINE inline __attribute__((always_inline))
 
 namespace sdlqr::sda_detail {
@@ -69,10 +77,9 @@ SDLQR_SDA_INLINE bool gaussJordan(double* m) {
     double pivot_abs = std::fabs(m[p * S + p]);
     for (int i = p + 1; i < N; ++i) {
       const double candidate = std::fabs(m[i * S + p]);
-      if (candidate > pivot_abs) {
-        pivot_abs = candidate;
-        pivot_row = i;
-      }
+      const bool larger = candidate > pivot_abs;
+      pivot_abs = larger ? candidate : pivot_abs;
+      pivot_row = larger ? i : pivot_row;
     }
     if (!(pivot_abs > 0.0) || !std::isfinite(pivot_abs)) return false;
     if (pivot_row != p) {
@@ -107,6 +114,64 @@ SDLQR_SDA_INLINE double frobeniusDifference(const double* a, const double* b, do
   }
   norm_b = std::sqrt(norm);
   return std::sqrt(diff);
+}
+
+// Cholesky test of a symmetric N x N matrix (stride S): true when positive definite.
+template <int N, int S>
+SDLQR_SDA_INLINE bool positiveDefinite(const double* m) {
+  double l[N][N];
+  for (int j = 0; j < N; ++j) {
+    double diagonal = m[j * S + j];
+    for (int k = 0; k < j; ++k) diagonal -= l[j][k] * l[j][k];
+    if (!(diagonal > 0.0) || !std::isfinite(diagonal)) return false;
+    l[j][j] = std::sqrt(diagonal);
+    const double inverse = 1.0 / l[j][j];
+    for (int i = j + 1; i < N; ++i) {
+      double value = m[i * S + j];
+      for (int k = 0; k < j; ++k) value -= l[i][k] * l[j][k];
+      l[i][j] = value * inverse;
+    }
+  }
+  return true;
+}
+
+// For a DARE candidate X with closed loop A_cl: the squared Frobenius norm of the residual
+// A^T X A_cl - X + Q, and whether X and X - A_cl^T X A_cl are both positive definite (Lyapunov).
+struct LyapunovOutcome {
+  double residual_squared = 0.0;
+  bool lyapunov = false;
+};
+
+template <int N>
+SDLQR_SDA_INLINE LyapunovOutcome lyapunovBody(const Block<N, N>& A, const Block<N, N>& A_cl, const Block<N, N>& X,
+                                              const Block<N, N>& Q) {
+  constexpr int S = padded(N);
+  Block<N, N> X_A_cl, residual, quadratic;
+  multiply<N, S, false, false, S, S, S>(X.v, A_cl.v, X_A_cl.v);
+  residual = Q;
+  for (int i = 0; i < N * S; ++i) residual.v[i] -= X.v[i];
+  multiply<N, S, true, true, S, S, S>(A.v, X_A_cl.v, residual.v);
+  multiply<N, S, true, false, S, S, S>(A_cl.v, X_A_cl.v, quadratic.v);
+  LyapunovOutcome outcome;
+  Block<N, N> decrease;  // X - A_cl^T X A_cl, symmetrized; the Cholesky test reads the lower half
+  for (int i = 0; i < N; ++i) {
+    for (int j = 0; j < N; ++j) outcome.residual_squared += residual(i, j) * residual(i, j);
+    for (int j = 0; j <= i; ++j) decrease(i, j) = X(i, j) - 0.5 * (quadratic(i, j) + quadratic(j, i));
+  }
+  outcome.lyapunov = positiveDefinite<N, S>(X.v) && positiveDefinite<N, S>(decrease.v);
+  return outcome;
+}
+
+template <int N>
+SDLQR_AVX2_TARGET LyapunovOutcome lyapunovAvx2(const Block<N, N>& A, const Block<N, N>& A_cl,
+                                                                  const Block<N, N>& X, const Block<N, N>& Q) {
+  return lyapunovBody<N>(A, A_cl, X, Q);
+}
+
+template <int N>
+LyapunovOutcome lyapunovBaseline(const Block<N, N>& A, const Block<N, N>& A_cl, const Block<N, N>& X,
+                                 const Block<N, N>& Q) {
+  return lyapunovBody<N>(A, A_cl, X, Q);
 }
 
 struct DoublingOutcome {
@@ -185,7 +250,7 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopBody(Block<N, N>& A, Block<N, N>& G
 // faster here) and for the baseline x86-64 instruction set, chosen once at run time. Only plain
 // double arrays cross these functions, so no Eigen type is compiled with two vector settings.
 template <int N>
-__attribute__((target("avx2,fma"))) DoublingOutcome doublingLoopAvx2(Block<N, N>& A, Block<N, N>& G, Block<N, N>& H,
+SDLQR_AVX2_TARGET DoublingOutcome doublingLoopAvx2(Block<N, N>& A, Block<N, N>& G, Block<N, N>& H,
                                                                      double tolerance, int max_doublings) {
   return doublingLoopBody<N>(A, G, H, tolerance, max_doublings);
 }
@@ -196,13 +261,40 @@ DoublingOutcome doublingLoopBaseline(Block<N, N>& A, Block<N, N>& G, Block<N, N>
   return doublingLoopBody<N>(A, G, H, tolerance, max_doublings);
 }
 
+#if defined(SDLQR_SMALL_KERNELS_X86)
 inline bool cpuHasAvx2Fma() {
   static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   return available;
 }
 
+// A_k of the doubling falls like rho^(2^k), so the fast modes of a solve underflow into
+// subnormal numbers in the late doublings, and x86 cores may take a microcode assist for each
+// operation on them. Values below 2^-1022 carry no information for a Riccati solution of order
+// 1e-2..1e4, so flush-to-zero / denormals-are-zero are set for the call and then restored.
+class FlushSubnormals {
+ public:
+  FlushSubnormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
+  ~FlushSubnormals() { _mm_setcsr(saved_); }
+  FlushSubnormals(const FlushSubnormals&) = delete;
+  FlushSubnormals& operator=(const FlushSubnormals&) = delete;
+
+ private:
+  unsigned saved_;
+};
+#else
+inline bool cpuHasAvx2Fma() { return false; }
+class FlushSubnormals {};
+#endif
+
+template <int N>
+LyapunovOutcome lyapunovCheck(const Block<N, N>& A, const Block<N, N>& A_cl, const Block<N, N>& X,
+                              const Block<N, N>& Q) {
+  return cpuHasAvx2Fma() ? lyapunovAvx2<N>(A, A_cl, X, Q) : lyapunovBaseline<N>(A, A_cl, X, Q);
+}
+
 template <int N>
 DoublingOutcome doublingLoop(Block<N, N>& A, Block<N, N>& G, Block<N, N>& H, double tolerance, int max_doublings) {
+  const FlushSubnormals flush;
   return cpuHasAvx2Fma() ? doublingLoopAvx2<N>(A, G, H, tolerance, max_doublings)
                          : doublingLoopBaseline<N>(A, G, H, tolerance, max_doublings);
 }
