@@ -37,7 +37,8 @@ SegmentMatrix normalizedSnapHessian() {
   SegmentMatrix h = SegmentMatrix::Zero();
   for (int n = kSnapOrder; n < kCoefficientCount; ++n) {
     for (int m = kSnapOrder; m < kCoefficientCount; ++m) {
-      h(n, m) = fallingFactorial(n, kSnapOrder) * fallingFactorial(m, kSnapOrder) / (n + m - 2 * kSnapOrder + 1);
+      h(n, m) = static_cast<Real>(fallingFactorial(n, kSnapOrder) * fallingFactorial(m, kSnapOrder)) /
+                (n + m - 2 * kSnapOrder + 1);
     }
   }
   return h;

@@ -43,6 +43,8 @@ void interpolateSamples(const TrajectorySample& previous, const TrajectorySample
 TrackingOutput SpatialTracker::update(double /*now*/, const Vec3& p) {
   const Trajectory& trajectory = *trajectory_;
   const int last = static_cast<int>(trajectory.samples.size()) - 1;
+  // A non-finite position must not run the index forward: stay at the segment start.
+  if (!p.allFinite()) return referenceOn(trajectory, index_, 0.0, lap_, false);
   // When the step bound ends the loop, the reference is the start of the segment reached.
   double gamma = 0.0;
   bool finished = false;

@@ -173,6 +173,20 @@ TEST(SpatialTracking, CountsLapsOnAClosedTrajectory) {
   }
 }
 
+TEST(SpatialTracking, NonFinitePositionDoesNotAdvance) {
+  const Trajectory line = straightLine();
+  TrajectoryTracker tracker;
+  ASSERT_EQ(tracker.load(line, 0.0), "");
+  ASSERT_EQ(tracker.update(0.0, Vec3(1.5, 0.0, 1.0)).index, 2);
+  for (const Vec3& bad : {Vec3(NAN, 0.0, 1.0), Vec3(INFINITY, 0.0, 1.0), Vec3(0.0, -INFINITY, 1.0)}) {
+    const TrackingOutput out = tracker.update(0.0, bad);
+    EXPECT_EQ(out.index, 2);
+    EXPECT_EQ(out.gamma, 0.0);
+    EXPECT_TRUE(out.x.allFinite());
+  }
+  EXPECT_EQ(tracker.update(0.0, Vec3(1.6, 0.0, 1.0)).index, 2);
+}
+
 TEST(SpatialTracking, DegenerateClosedPathDoesNotLoopForever) {
   Trajectory point = square();
   for (TrajectorySample& s : point.samples) position(s.x) = Vec3(0.0, 0.0, 1.0);  // every segment zero length

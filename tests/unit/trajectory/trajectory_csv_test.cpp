@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <iostream>
+#include <random>
 #include <sstream>
 
 #include "sdlqr/trajectory/paper_cases.hpp"
@@ -122,6 +124,39 @@ TEST(TrajectoryCsv, JumpLimitIsConfigurable) {
     EXPECT_EQ(std::string(e.what()), "strict.csv:5: position jump 0.1 m exceeds 0.05 m");
     EXPECT_EQ(e.line(), 5);
   }
+}
+
+TEST(TrajectoryCsv, GarbageNeverCrashes) {
+  // Mutate a valid file at random (bytes replaced, cut, duplicated): it either parses into a valid
+  // trajectory or throws TrajectoryFileError; nothing else.
+  std::stringstream valid;
+  writeTrajectoryCsv(valid, paperEllipse(TrajectoryParams{}, 9.81));
+  const std::string original = valid.str();
+  std::mt19937 rng(11);
+  const std::string alphabet = "0123456789.,-+eE#\n naif:tx";
+  int rejected = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string text = original;
+    const int edits = 1 + static_cast<int>(rng() % 4);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = rng() % text.size();
+      switch (rng() % 3) {
+        case 0: text[at] = alphabet[rng() % alphabet.size()]; break;
+        case 1: text.erase(at, rng() % 40); break;
+        default: text.insert(at, text.substr(rng() % text.size(), rng() % 40)); break;
+      }
+      if (text.empty()) text = "#";
+    }
+    std::istringstream in(text);
+    try {
+      const Trajectory parsed = parseTrajectoryCsv(in, "fuzz.csv");
+      EXPECT_EQ(validateTrajectory(parsed, SampleChecks{}), "") << text;
+    } catch (const TrajectoryFileError&) {
+      ++rejected;
+    }
+  }
+  std::cout << "  3000 mutated files: " << rejected << " rejected with a line number, the rest valid\n";
+  EXPECT_GT(rejected, 0);
 }
 
 TEST(TrajectoryCsv, MissingFileIsAnError) {

@@ -17,6 +17,7 @@
 //    after passing it) is clamped to 0: the nearest point ahead on the path is sample i-1 itself.
 //    Extrapolating backwards would hand out a point that is no longer on the remaining path.
 //  - segments shorter than 1 um are skipped (gamma is undefined there).
+//  - a non-finite position does not move i (the reference stays at sample i-1).
 //  - end of an open trajectory: the last sample is held (gamma = 1, finished = true); it resumes
 //    interpolating if the vehicle is pushed back behind the last sample (i still does not drop).
 //  - closed trajectory: after the last segment i wraps to 1 and `lap` counts up; at most one lap
