@@ -1,0 +1,103 @@
+// sdlqr-controller: wires the bus to the 100 Hz state-dependent LQR (controller/ library).
+
+#include <iostream>
+
+#include "sdlqr/common/cli.hpp"
+#include "sdlqr/common/validate.hpp"
+#include "sdlqr/controller/state_dependent_lqr.hpp"
+#include "sdlqr/node/convert.hpp"
+#include "sdlqr/node/node.hpp"
+
+using namespace sdlqr;
+
+int main(int argc, char** argv) {
+  return runMain("sdlqr-controller", [&] {
+    ProcessOptions options;
+    ArgParser parser("sdlqr-controller",
+                     "State-dependent LQR at 100 Hz of simulation time: u = u0 + K (x - x0) with the newest\n"
+                     "GAINS, the paper's input limits and a setpoint or trajectory reference.\n"
+                     "In: STATE_EST, GAINS, TRAJECTORY, PARAMS, COMMAND.  Out: RATE_CMD, REFERENCE, HEARTBEAT.");
+    addProcessOptions(parser, &options);
+    parser.setEpilog("exit codes: 0 stopped by SIGINT/SIGTERM, 1 runtime failure, 2 bad option or configuration");
+    parser.parseOrExit(argc, argv);
+
+    const ConfigReader config = loadVehicleConfig(options.config_path);
+    const LqrParams lqr = LqrParams::load(config.child("lqr"));
+    const controller::ControllerParams params = controller::ControllerParams::load(config.child("controller"));
+    controller::StateDependentLqr lqr_controller(lqr, params);
+
+    node::Node bus("sdlqr-controller", options);
+    const ValidationLimits limits;
+    node::Counters::Id reject_ids[static_cast<int>(RejectReason::kCount)];
+    for (int i = 0; i < static_cast<int>(RejectReason::kCount); ++i) {
+      reject_ids[i] = bus.counters().add(counterName(static_cast<RejectReason>(i)));
+    }
+    const auto ticks_id = bus.counters().add("controller.ticks");
+    const auto fallback_id = bus.counters().add("controller.fallback_ticks");
+    const auto stale_id = bus.counters().add("controller.stale_ticks");
+    const auto saturated_id = bus.counters().add("controller.saturated_ticks");
+    const auto trajectory_refused_id = bus.counters().add("reject.trajectory_refused");
+    // Counts a rejection; true when the message must be dropped.
+    auto reject = [&](RejectReason reason) {
+      if (reason == RejectReason::kNone) return false;
+      bus.countRejected(reject_ids[static_cast<int>(reason)]);
+      return true;
+    };
+    TimeGate state_time, gains_time;
+    int64_t now_utime = -1;
+
+    controller::StateDependentLqr::Tick tick;
+    bus.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t& msg) {
+      const StateEstimate estimate = node::fromLcm(msg);
+      RejectReason reason = validate(estimate, limits);
+      if (reason == RejectReason::kNone) reason = state_time.check(estimate.utime, -1);
+      if (reject(reason)) return;
+      state_time.accept(estimate.utime);
+      now_utime = estimate.utime;
+      bus.setSimTime(now_utime);
+      if (!lqr_controller.onStateEstimate(estimate, tick)) return;
+      bus.publish(channel::kRateCommand, node::toLcm(tick.command));
+      bus.publish(channel::kReference, node::toLcm(tick.reference));
+      const controller::ControllerStatus& status = lqr_controller.status();
+      bus.counters().increment(ticks_id);
+      if (status.gains == GainsFreshness::kFallback) bus.counters().increment(fallback_id);
+      if (status.gains == GainsFreshness::kStale) bus.counters().increment(stale_id);
+      if (tick.command.saturated) bus.counters().increment(saturated_id);
+      bus.setState(status.gains == GainsFreshness::kFresh ? node::ProcessState::kRunning
+                                                          : node::ProcessState::kDegraded);
+    });
+    bus.subscribe<gains_t>(channel::kGains, [&](const gains_t& msg) {
+      const GainSet gains = node::fromLcm(msg);
+      RejectReason reason = validate(gains, limits);
+      if (reason == RejectReason::kNone) reason = gains_time.check(gains.utime, now_utime);
+      if (reject(reason)) return;
+      gains_time.accept(gains.utime);
+      lqr_controller.setGains(gains);
+    }, 4);
+    bus.subscribe<command_t>(channel::kCommand, [&](const command_t& msg) {
+      const Command command = node::fromLcm(msg);
+      if (reject(validate(command, limits))) return;
+      lqr_controller.handleCommand(command);
+    }, 16);
+    bus.subscribe<trajectory_t>(channel::kTrajectory, [&](const trajectory_t& msg) {
+      const Trajectory trajectory = node::fromLcm(msg);
+      if (reject(validate(trajectory, limits))) return;
+      const std::string refused = lqr_controller.setTrajectory(trajectory);
+      if (!refused.empty()) {
+        bus.countRejected(trajectory_refused_id);
+        bus.setLastError("TRAJECTORY seq " + std::to_string(trajectory.seq) + " refused: " + refused);
+      }
+    }, 2);
+    bus.subscribe<params_t>(channel::kParams, [&](const params_t& msg) {
+      const ParamsUpdate update = node::fromLcm(msg);
+      if (reject(validate(update, limits))) return;
+      lqr_controller.applyParams(update);
+    }, 16);
+
+    std::cerr << "sdlqr-controller: running on " << bus.channel(channel::kStateEstimate) << "\n";
+    while (bus.spin(100)) {
+    }
+    bus.shutdown();
+    return 0;
+  });
+}

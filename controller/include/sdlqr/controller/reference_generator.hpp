@@ -1,0 +1,56 @@
+#pragma once
+// Chooses the reference (x0, u0) of each controller tick: idle on the ground, a take-off ramp,
+// a held setpoint (reference jumps of Fig. 5 are setpoint changes), a tracked trajectory, or a
+// landing ramp. Clock-free: time is the state estimate's utime.
+
+#include "sdlqr/common/messages.hpp"
+#include "sdlqr/controller/controller_params.hpp"
+#include "sdlqr/trajectory/tracking.hpp"
+
+namespace sdlqr::controller {
+
+enum class FlightPhase { kIdle, kTakeoff, kHold, kTrajectory, kLanding };
+
+const char* toString(FlightPhase phase);
+
+class ReferenceGenerator {
+ public:
+  ReferenceGenerator(const ControllerParams& params, double gravity);
+
+  void handleCommand(const Command& command, const StateEstimate& latest);
+  // Starts tracking a trajectory (copied once here, never in the 100 Hz path) if flying. Returns
+  // an empty string when accepted, else why not.
+  std::string setTrajectory(const Trajectory& trajectory, int64_t now_utime);
+  // Switches spatial <-> temporal tracking without losing the place (PARAMS tracking field).
+  bool setTrackingMode(ReferenceMode mode, int64_t now_utime);
+  void setParams(const ControllerParams& params) { params_ = params; }
+
+  // Advances the phase with the estimate and fills `out` (x, u, mode, index, gamma, trajectory_seq).
+  // Returns false while idle (nothing to command).
+  bool update(const StateEstimate& estimate, Reference& out);
+
+  FlightPhase phase() const { return phase_; }
+  const trajectory::TrajectoryTracker& tracker() const { return tracker_; }
+
+ private:
+  void startTakeoff(const StateEstimate& estimate, double height);
+  void hold(const Vec3& position, double yaw);
+  bool landedAt(const StateEstimate& estimate);
+
+  ControllerParams params_;
+  double gravity_;
+  FlightPhase phase_ = FlightPhase::kIdle;
+  bool takeoff_pending_ = false;
+  double pending_takeoff_height_ = 1.0;
+  Vec3 setpoint_ = Vec3::Zero();
+  double yaw_ = 0.0;
+  Vec3 ramp_position_ = Vec3::Zero();
+  double ramp_target_z_ = 0.0;
+  double ground_z_ = 0.0;
+  int64_t last_utime_ = -1;
+  int64_t landed_since_utime_ = -1;
+  trajectory::TrajectoryTracker tracker_;
+  int64_t trajectory_seq_ = -1;
+};
+
+}  // namespace sdlqr::controller

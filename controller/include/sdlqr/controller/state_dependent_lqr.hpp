@@ -1,0 +1,67 @@
+#pragma once
+// The 100 Hz controller process logic (paper §II-C, §III-B): on each tick of simulation time it
+// takes the newest estimate, the reference of the tick and the newest valid K, and computes the
+// body-rate and thrust command. K comes from the gain solver at 10 Hz; when it goes stale the last
+// valid K is kept and flagged, and after a timeout a hover K computed here takes over (DESIGN §7).
+
+#include "sdlqr/common/messages.hpp"
+#include "sdlqr/common/params.hpp"
+#include "sdlqr/controller/control_law.hpp"
+#include "sdlqr/controller/controller_params.hpp"
+#include "sdlqr/controller/reference_generator.hpp"
+
+namespace sdlqr::controller {
+
+struct ControllerStatus {
+  GainsFreshness gains = GainsFreshness::kFallback;
+  FlightPhase phase = FlightPhase::kIdle;
+  int64_t ticks = 0;
+  int64_t fallback_ticks = 0;
+  int64_t stale_ticks = 0;
+  int64_t saturated_ticks = 0;
+};
+
+class StateDependentLqr {
+ public:
+  // Solves the fallback hover K once (the reason construction may fail: throws std::runtime_error
+  // when the weights admit no stabilizing hover gain).
+  StateDependentLqr(const LqrParams& lqr, const ControllerParams& params);
+
+  // A K that passed validation (finite, solved OK); older than the current one is ignored.
+  void setGains(const GainSet& gains);
+  void handleCommand(const Command& command);
+  // Starts tracking (copies the samples: call on receipt). Empty string when accepted, else why not.
+  std::string setTrajectory(const Trajectory& trajectory);
+  // Weights (for the fallback K) and limits apply from the next tick; tracking switches the
+  // scheme without losing the place.
+  void applyParams(const ParamsUpdate& update);
+
+  struct Tick {
+    RateCommand command;
+    Reference reference;
+  };
+  // Returns true when this estimate starts a new control period and fills `out`; false between
+  // ticks, before the estimator is initialised, and while idle on the ground.
+  bool onStateEstimate(const StateEstimate& estimate, Tick& out);
+
+  const ControllerStatus& status() const { return status_; }
+  const GainMatrix& fallbackGain() const { return fallback_K_; }
+
+ private:
+  const GainMatrix& chooseGain(int64_t now_utime, GainsFreshness& freshness, int64_t& gains_seq);
+
+  LqrParams lqr_;
+  ControllerParams params_;
+  ReferenceGenerator references_;
+  GainMatrix fallback_K_;
+  GainSet gains_;
+  bool has_gains_ = false;
+  StateEstimate latest_;
+  bool has_estimate_ = false;
+  int64_t next_tick_utime_ = 0;
+  int64_t command_seq_ = 0;
+  int64_t reference_seq_ = 0;
+  ControllerStatus status_;
+};
+
+}  // namespace sdlqr::controller

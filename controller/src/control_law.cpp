@@ -1,0 +1,42 @@
+#include "sdlqr/controller/control_law.hpp"
+
+#include <algorithm>
+
+#include "sdlqr/common/quaternion.hpp"
+
+namespace sdlqr::controller {
+
+namespace {
+
+Vec3 boundNorm(const Vec3& v, double max_norm) {
+  const double norm = v.norm();
+  return norm > max_norm ? Vec3(v * (max_norm / norm)) : v;
+}
+
+}  // namespace
+
+State stateError(const State& x, const State& x_ref, const ErrorBounds& bounds) {
+  State error;
+  position(error) = boundNorm(position(x) - position(x_ref), bounds.max_position_error);
+  const Quat q = orientation(x);
+  orientation(error) = q - quat::sameHemisphere(orientation(x_ref), q);
+  velocity(error) = boundNorm(velocity(x) - velocity(x_ref), bounds.max_velocity_error);
+  return error;
+}
+
+ControlOutput applyControlLaw(const GainMatrix& K, const State& x, const State& x_ref, const Input& u_ref,
+                              const LqrParams& limits, const ErrorBounds& bounds) {
+  ControlOutput out;
+  out.u = u_ref + K * stateError(x, x_ref, bounds);
+  const double rate_norm = bodyRate(out.u).norm();
+  if (rate_norm > limits.omega_max) {
+    bodyRate(out.u) *= limits.omega_max / rate_norm;
+    out.rate_saturated = true;
+  }
+  const double thrust = std::clamp(out.u[kThrust], limits.c_min, limits.c_max);
+  out.thrust_saturated = thrust != out.u[kThrust];
+  out.u[kThrust] = thrust;
+  return out;
+}
+
+}  // namespace sdlqr::controller

@@ -1,0 +1,161 @@
+#include "sdlqr/controller/reference_generator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sdlqr/common/quaternion.hpp"
+
+namespace sdlqr::controller {
+
+const char* toString(FlightPhase phase) {
+  switch (phase) {
+    case FlightPhase::kIdle: return "idle";
+    case FlightPhase::kTakeoff: return "takeoff";
+    case FlightPhase::kHold: return "hold";
+    case FlightPhase::kTrajectory: return "trajectory";
+    case FlightPhase::kLanding: return "landing";
+  }
+  return "unknown";
+}
+
+ReferenceGenerator::ReferenceGenerator(const ControllerParams& params, double gravity)
+    : params_(params), gravity_(gravity) {}
+
+std::string ReferenceGenerator::setTrajectory(const Trajectory& trajectory, int64_t now_utime) {
+  if (phase_ == FlightPhase::kIdle || phase_ == FlightPhase::kLanding) return "not flying";
+  const int64_t start_utime = trajectory.start_utime > 0 ? trajectory.start_utime : now_utime;
+  const std::string error = tracker_.load(trajectory, static_cast<double>(start_utime) * 1e-6);
+  if (!error.empty()) return error;
+  trajectory_seq_ = trajectory.seq;
+  phase_ = FlightPhase::kTrajectory;
+  return {};
+}
+
+bool ReferenceGenerator::setTrackingMode(ReferenceMode mode, int64_t now_utime) {
+  if (mode != ReferenceMode::kSpatial && mode != ReferenceMode::kTemporal) return false;
+  if (!tracker_.loaded()) return true;
+  return tracker_.setMode(mode, static_cast<double>(now_utime) * 1e-6);
+}
+
+void ReferenceGenerator::handleCommand(const Command& command, const StateEstimate& latest) {
+  const bool flying = phase_ != FlightPhase::kIdle;
+  switch (command.command) {
+    case CommandType::kTakeoff:
+      if (!flying) {
+        takeoff_pending_ = true;
+        pending_takeoff_height_ = command.position[2] > 0.0 ? command.position[2] : 1.0;
+      }
+      break;
+    case CommandType::kGoto:
+      if (flying) {
+        tracker_.clear();
+        hold(command.position, command.yaw);
+      }
+      break;
+    case CommandType::kLand:
+      takeoff_pending_ = false;
+      if (flying) {
+        tracker_.clear();
+        phase_ = FlightPhase::kLanding;
+        ramp_position_ = Vec3(latest.position[0], latest.position[1], std::max(latest.position[2], ground_z_));
+        landed_since_utime_ = -1;
+      }
+      break;
+    case CommandType::kDisarm:
+      takeoff_pending_ = false;
+      phase_ = FlightPhase::kIdle;
+      break;
+    case CommandType::kArm:
+      break;
+  }
+}
+
+void ReferenceGenerator::startTakeoff(const StateEstimate& estimate, double height) {
+  ground_z_ = estimate.position[2];
+  ramp_position_ = estimate.position;
+  ramp_target_z_ = ground_z_ + height;
+  setpoint_ = Vec3(estimate.position[0], estimate.position[1], ramp_target_z_);
+  yaw_ = quat::yaw(estimate.orientation);
+  phase_ = FlightPhase::kTakeoff;
+  takeoff_pending_ = false;
+}
+
+void ReferenceGenerator::hold(const Vec3& position, double yaw) {
+  setpoint_ = position;
+  yaw_ = yaw;
+  phase_ = FlightPhase::kHold;
+}
+
+bool ReferenceGenerator::landedAt(const StateEstimate& estimate) {
+  const bool resting = estimate.position[2] < ground_z_ + 0.1 && estimate.velocity.norm() < params_.landed_speed;
+  if (!resting) {
+    landed_since_utime_ = -1;
+    return false;
+  }
+  if (landed_since_utime_ < 0) landed_since_utime_ = estimate.utime;
+  return static_cast<double>(estimate.utime - landed_since_utime_) * 1e-6 >= params_.landed_time;
+}
+
+bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
+  const double dt = last_utime_ < 0 ? 0.0 : std::max(0.0, static_cast<double>(estimate.utime - last_utime_) * 1e-6);
+  last_utime_ = estimate.utime;
+
+  Vec3 position_ref = setpoint_;
+  Vec3 velocity_ref = Vec3::Zero();
+  switch (phase_) {
+    case FlightPhase::kIdle:
+      if (!takeoff_pending_ || estimate.status != EstimatorStatus::kOk) return false;
+      startTakeoff(estimate, pending_takeoff_height_);
+      position_ref = ramp_position_;
+      break;
+    case FlightPhase::kTakeoff:
+      ramp_position_[2] = std::min(ramp_target_z_, ramp_position_[2] + params_.takeoff_speed * dt);
+      position_ref = ramp_position_;
+      if (ramp_position_[2] >= ramp_target_z_) {
+        hold(setpoint_, yaw_);
+      } else {
+        velocity_ref[2] = params_.takeoff_speed;
+      }
+      break;
+    case FlightPhase::kHold:
+      break;
+    case FlightPhase::kTrajectory: {
+      const trajectory::TrackingOutput& tracked =
+          tracker_.update(static_cast<double>(estimate.utime) * 1e-6, estimate.position);
+      out.x = tracked.x;
+      out.u = tracked.u;
+      out.mode = tracker_.mode();
+      out.index = tracked.index;
+      out.gamma = tracked.gamma;
+      out.trajectory_seq = trajectory_seq_;
+      // A GOTO or LAND after the trajectory starts from where the reference was.
+      setpoint_ = position(tracked.x);
+      yaw_ = quat::yaw(orientation(tracked.x));
+      return true;
+    }
+    case FlightPhase::kLanding: {
+      if (landedAt(estimate)) {
+        phase_ = FlightPhase::kIdle;
+        return false;
+      }
+      // The reference keeps sinking below the ground (bounded by landing_undershoot) and keeps
+      // asking for the landing speed, so thrust stays below hover after touchdown even when
+      // the estimate is off, until the bodyrate loop detects the landing and disarms.
+      const double bottom = ground_z_ - params_.landing_undershoot;
+      ramp_position_[2] = std::max(bottom, ramp_position_[2] - params_.landing_speed * dt);
+      position_ref = ramp_position_;
+      velocity_ref[2] = -params_.landing_speed;
+      break;
+    }
+  }
+
+  out.x = makeState(position_ref, quat::fromYaw(yaw_), velocity_ref);
+  out.u = makeInput(Vec3::Zero(), gravity_);
+  out.mode = ReferenceMode::kSetpoint;
+  out.index = 0;
+  out.gamma = 0.0;
+  out.trajectory_seq = -1;
+  return true;
+}
+
+}  // namespace sdlqr::controller

@@ -1,0 +1,132 @@
+#include "sdlqr/controller/state_dependent_lqr.hpp"
+
+#include <stdexcept>
+
+#include "sdlqr/common/lqr.hpp"
+#include "sdlqr/common/quaternion.hpp"
+
+namespace sdlqr::controller {
+
+namespace {
+
+GainMatrix solveHoverGain(const LqrParams& lqr) {
+  const State hover = makeState(Vec3::Zero(), identityQuat(), Vec3::Zero());
+  const LqrResult result = solveLqr(hover, makeInput(Vec3::Zero(), lqr.gravity), lqr);
+  if (result.status != SolveStatus::kOk) {
+    throw std::runtime_error("no stabilizing hover gain for these weights: " +
+                             std::string(result.reason ? result.reason : "solver failed"));
+  }
+  return result.K;
+}
+
+// Hover is invariant under a yaw rotation of the world, so the hover K at heading psi is the K at
+// heading 0 applied to the state expressed in a frame yawed by -psi.
+GainMatrix yawedHoverGain(const GainMatrix& K0, double yaw) {
+  const Mat3 rz = quat::rotationMatrix(quat::fromYaw(-yaw));
+  GainMatrix K;
+  K.middleCols<3>(kPos) = K0.middleCols<3>(kPos) * rz;
+  K.middleCols<4>(kQuat) = K0.middleCols<4>(kQuat) * quat::leftMatrix(quat::fromYaw(-yaw));
+  K.middleCols<3>(kVel) = K0.middleCols<3>(kVel) * rz;
+  return K;
+}
+
+int64_t periodUtime(const ControllerParams& params) { return static_cast<int64_t>(1e6 / params.rate_hz + 0.5); }
+
+}  // namespace
+
+StateDependentLqr::StateDependentLqr(const LqrParams& lqr, const ControllerParams& params)
+    : lqr_(lqr), params_(params), references_(params, lqr.gravity), fallback_K_(solveHoverGain(lqr)) {}
+
+void StateDependentLqr::setGains(const GainSet& gains) {
+  if (has_gains_ && gains.utime < gains_.utime) return;  // a late, older solve
+  gains_ = gains;
+  has_gains_ = true;
+}
+
+void StateDependentLqr::handleCommand(const Command& command) { references_.handleCommand(command, latest_); }
+
+std::string StateDependentLqr::setTrajectory(const Trajectory& trajectory) {
+  return references_.setTrajectory(trajectory, latest_.utime);
+}
+
+void StateDependentLqr::applyParams(const ParamsUpdate& update) {
+  LqrParams next = lqr_;
+  if (update.field_mask & ParamsUpdate::kLimits) {
+    next.omega_max = update.omega_max;
+    next.c_min = update.c_min;
+    next.c_max = update.c_max;
+  }
+  if (update.field_mask & ParamsUpdate::kWeights) {
+    next.q_diag = update.q_diag;
+    next.r_diag = update.r_diag;
+  }
+  if (update.field_mask & ParamsUpdate::kTracking) references_.setTrackingMode(update.tracking, latest_.utime);
+  if (!next.valid()) return;  // validated upstream as well; never adopt an invalid set
+  if (update.field_mask & ParamsUpdate::kWeights) fallback_K_ = solveHoverGain(next);
+  lqr_ = next;
+}
+
+const GainMatrix& StateDependentLqr::chooseGain(int64_t now_utime, GainsFreshness& freshness, int64_t& gains_seq) {
+  const double age = has_gains_ ? static_cast<double>(now_utime - gains_.utime) * 1e-6 : 1e9;
+  if (age <= params_.gains_fallback_s) {
+    freshness = age <= params_.gains_stale_s ? GainsFreshness::kFresh : GainsFreshness::kStale;
+    gains_seq = gains_.seq;
+    return gains_.K;
+  }
+  freshness = GainsFreshness::kFallback;
+  gains_seq = -1;
+  return fallback_K_;
+}
+
+bool StateDependentLqr::onStateEstimate(const StateEstimate& estimate, Tick& out) {
+  latest_ = estimate;
+  has_estimate_ = true;
+  if (estimate.utime < next_tick_utime_) return false;
+  const int64_t period = periodUtime(params_);
+  next_tick_utime_ = (estimate.utime / period + 1) * period;
+  if (estimate.status == EstimatorStatus::kInitializing) return false;
+
+  Reference& reference = out.reference;
+  if (!references_.update(estimate, reference)) {
+    status_.phase = references_.phase();
+    return false;
+  }
+  status_.phase = references_.phase();
+
+  GainsFreshness freshness = GainsFreshness::kFresh;
+  int64_t gains_seq = -1;
+  const GainMatrix& chosen = chooseGain(estimate.utime, freshness, gains_seq);
+  GainMatrix yawed;
+  const GainMatrix* K = &chosen;
+  if (freshness == GainsFreshness::kFallback) {
+    yawed = yawedHoverGain(chosen, quat::yaw(orientation(reference.x)));
+    K = &yawed;
+  }
+
+  const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
+  const ControlOutput control = applyControlLaw(*K, estimate.state(), reference.x, reference.u, lqr_, bounds);
+
+  reference.utime = estimate.utime;
+  reference.seq = reference_seq_++;
+  reference.state_seq = estimate.seq;
+
+  RateCommand& command = out.command;
+  command.utime = estimate.utime;
+  command.seq = command_seq_++;
+  command.body_rate = bodyRate(control.u);
+  command.thrust = control.u[kThrust];
+  command.state_seq = estimate.seq;
+  command.gains_seq = gains_seq;
+  command.reference_seq = reference.seq;
+  command.saturated = static_cast<int8_t>((control.rate_saturated ? 1 : 0) | (control.thrust_saturated ? 2 : 0));
+  command.gains_status = freshness;
+
+  ++status_.ticks;
+  status_.gains = freshness;
+  if (freshness == GainsFreshness::kFallback) ++status_.fallback_ticks;
+  if (freshness == GainsFreshness::kStale) ++status_.stale_ticks;
+  if (command.saturated) ++status_.saturated_ticks;
+  return true;
+}
+
+}  // namespace sdlqr::controller
