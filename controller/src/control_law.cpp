@@ -15,19 +15,19 @@ Vec3 boundNorm(const Vec3& v, double max_norm) {
 
 }  // namespace
 
-State stateError(const State& x, const State& x_ref, const ErrorBounds& bounds) {
+State stateError(const State& x, const State& x_ref, const Quat& q_lin, const ErrorBounds& bounds) {
   State error;
   position(error) = boundNorm(position(x) - position(x_ref), bounds.max_position_error);
-  const Quat q = orientation(x);
+  const Quat q = quat::sameHemisphere(orientation(x), q_lin);
   orientation(error) = q - quat::sameHemisphere(orientation(x_ref), q);
   velocity(error) = boundNorm(velocity(x) - velocity(x_ref), bounds.max_velocity_error);
   return error;
 }
 
-ControlOutput applyControlLaw(const GainMatrix& K, const State& x, const State& x_ref, const Input& u_ref,
-                              const LqrParams& limits, const ErrorBounds& bounds) {
+ControlOutput applyControlLaw(const GainMatrix& K, const Quat& q_lin, const State& x, const State& x_ref,
+                              const Input& u_ref, const LqrParams& limits, const ErrorBounds& bounds) {
   ControlOutput out;
-  out.u = u_ref + K * stateError(x, x_ref, bounds);
+  out.u = u_ref + K * stateError(x, x_ref, q_lin, bounds);
   const double rate_norm = bodyRate(out.u).norm();
   if (rate_norm > limits.omega_max) {
     bodyRate(out.u) *= limits.omega_max / rate_norm;

@@ -98,13 +98,17 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& estimate, Tick& out
   const GainMatrix& chosen = chooseGain(estimate.utime, freshness, gains_seq);
   GainMatrix yawed;
   const GainMatrix* K = &chosen;
+  Quat q_lin = orientation(gains_.x_lin);
   if (freshness == GainsFreshness::kFallback) {
-    yawed = yawedHoverGain(chosen, quat::yaw(orientation(reference.x)));
+    const double yaw = quat::yaw(orientation(reference.x));
+    yawed = yawedHoverGain(chosen, yaw);
     K = &yawed;
+    q_lin = quat::fromYaw(yaw);
   }
 
   const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
-  const ControlOutput control = applyControlLaw(*K, estimate.state(), reference.x, reference.u, lqr_, bounds);
+  const ControlOutput control =
+      applyControlLaw(*K, q_lin, estimate.state(), reference.x, reference.u, lqr_, bounds);
 
   reference.utime = estimate.utime;
   reference.seq = reference_seq_++;

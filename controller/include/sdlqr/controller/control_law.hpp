@@ -17,12 +17,15 @@ struct ErrorBounds {
   double max_velocity_error = 2.0;  // [m/s]
 };
 
-// x - x_ref with the reference quaternion moved into the hemisphere of q (q and -q are the same
-// attitude; K is only valid for the nearby one) and position and velocity errors bounded in norm.
-State stateError(const State& x, const State& x_ref, const ErrorBounds& bounds);
+// x - x_ref with position and velocity errors bounded in norm. q and -q are the same attitude,
+// but K acts on the quaternion linearly and was built at q_lin: K at -q_lin is K at q_lin with its
+// quaternion columns negated. So q is first taken in the hemisphere of q_lin, then q_ref in the
+// hemisphere of that q (DESIGN §3); the command is then the same for every sign choice.
+State stateError(const State& x, const State& x_ref, const Quat& q_lin, const ErrorBounds& bounds);
 
 // u_ref + K (x - x_ref), body rates scaled to ||omega|| <= omega_max, thrust clipped to [c_min, c_max].
-ControlOutput applyControlLaw(const GainMatrix& K, const State& x, const State& x_ref, const Input& u_ref,
-                              const LqrParams& limits, const ErrorBounds& bounds);
+// q_lin: the quaternion K was linearized at (GainSet::x_lin).
+ControlOutput applyControlLaw(const GainMatrix& K, const Quat& q_lin, const State& x, const State& x_ref,
+                              const Input& u_ref, const LqrParams& limits, const ErrorBounds& bounds);
 
 }  // namespace sdlqr::controller
