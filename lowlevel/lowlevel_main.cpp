@@ -37,8 +37,7 @@ int main(int argc, char** argv) {
     parser.setEpilog("exit codes: 0 stopped by SIGINT/SIGTERM, 1 runtime failure, 2 bad option or configuration");
     parser.parseOrExit(argc, argv);
 
-    ConfigReader config(YAML::Node(YAML::NodeType::Map), "");
-    if (!options.config_path.empty()) config = ConfigReader(loadYamlFile(options.config_path), "");
+    const ConfigReader config = loadVehicleConfig(options.config_path);
     const VehicleParams vehicle = VehicleParams::load(config.child("vehicle"));
     const double gravity = LqrParams::load(config.child("lqr")).gravity;
     const ConfigReader lowlevel_config = config.child("lowlevel");

@@ -114,7 +114,15 @@ void BodyrateLoop::updateModes() {
       if (fresh_command) enter(MotorMode::kRate);
       break;
     case MotorMode::kRate:
-      if (status_.command_age > params_.rate_cmd_timeout) enter(MotorMode::kFailsafe);
+      if (status_.command_age > params_.rate_cmd_timeout) {
+        // A controller that has landed may simply stop publishing: that is not an emergency.
+        if (status_.maybe_landed) {
+          ++counters_.auto_disarms;
+          enter(MotorMode::kDisarmed);
+        } else {
+          enter(MotorMode::kFailsafe);
+        }
+      }
       break;
     case MotorMode::kFailsafe:
       if (fresh_command) {

@@ -305,6 +305,32 @@ TEST(Landing, ControllerLandingAutoDisarmsOnTheGround) {
   EXPECT_LE(disarmed_at - touchdown_at, 2.0);
 }
 
+TEST(Landing, ControllerFallingSilentAfterLandingDisarmsWithoutFailsafe) {
+  // The LQR controller stops publishing once it considers itself landed.
+  FlightHarness h(realisticImu(9));
+  h.holdFor(Vec3::Zero(), 2.0);
+  h.command(CommandType::kTakeoff);
+  h.holdFor(Vec3(0.0, 0.0, 1.0), 3.0);
+  const int touchdowns_before = h.plant.touchdowns();
+  double touchdown_at = -1.0;
+  for (int i = 0; i < 8000; ++i) {
+    const bool publishing = touchdown_at < 0.0 || h.seconds() - touchdown_at < 0.4;
+    if (publishing && i % 10 == 0) {
+      Vec3 target = h.plant.position;
+      target.z() = h.plant.position.z() > 0.05 ? h.plant.position.z() - 0.4 : -1.0;
+      h.loop.setRateCommand(holdPosition(h.plant, target, h.utime));
+    }
+    h.tick();
+    if (touchdown_at < 0.0 && h.plant.touchdowns() > touchdowns_before) touchdown_at = h.seconds();
+    if (h.loop.mode() == MotorMode::kDisarmed) break;
+  }
+  ASSERT_GT(touchdown_at, 0.0);
+  EXPECT_EQ(h.loop.mode(), MotorMode::kDisarmed);
+  EXPECT_LT(h.seconds() - touchdown_at, 0.4 + 0.15);
+  EXPECT_EQ(h.loop.counters().failsafe_entries, 0);
+  EXPECT_EQ(h.loop.counters().auto_disarms, 1);
+}
+
 TEST(Landing, LowThrustInTheAirDoesNotDisarm) {
   // Diving with thrust far below hover: the accelerometer reads the low thrust, not g.
   FlightHarness h;
