@@ -15,16 +15,32 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kUsToMs = 1e-3;
 constexpr double kUsToS = 1e-6;
 
+// A log's contents are untrusted: integer differences saturate instead of overflowing, and time
+// spans are taken in double (exact below 2^53 us, i.e. for any real clock).
+int64_t difference(int64_t a, int64_t b) {
+  int64_t out = 0;
+  if (__builtin_sub_overflow(a, b, &out)) return a > b ? std::numeric_limits<int64_t>::max() : std::numeric_limits<int64_t>::min();
+  return out;
+}
+
+int64_t sum(int64_t a, int64_t b) {
+  int64_t out = 0;
+  if (__builtin_add_overflow(a, b, &out)) return a > 0 ? std::numeric_limits<int64_t>::max() : std::numeric_limits<int64_t>::min();
+  return out;
+}
+
+double spanUs(int64_t later, int64_t earlier) { return static_cast<double>(later) - static_cast<double>(earlier); }
+
 Distribution intervalsMs(const std::vector<int64_t>& times) {
   std::vector<double> intervals;
   if (times.size() > 1) intervals.reserve(times.size() - 1);
-  for (size_t i = 1; i < times.size(); ++i) intervals.push_back(static_cast<double>(times[i] - times[i - 1]) * kUsToMs);
+  for (size_t i = 1; i < times.size(); ++i) intervals.push_back(spanUs(times[i], times[i - 1]) * kUsToMs);
   return describe(std::move(intervals));
 }
 
-double rateHz(size_t count, int64_t span_us) {
-  if (count < 2 || span_us <= 0) return kNaN;
-  return static_cast<double>(count - 1) / (static_cast<double>(span_us) * kUsToS);
+double rateHz(size_t count, double span_us) {
+  if (count < 2 || !(span_us > 0.0)) return kNaN;
+  return static_cast<double>(count - 1) / (span_us * kUsToS);
 }
 
 const char* solveStatusName(SolveStatus status) {
@@ -178,10 +194,10 @@ ChannelMetrics computeChannelMetrics(const ChannelTimeline& t, int64_t log_start
   m.decoded = static_cast<int64_t>(t.utime.size());
   m.decode_failures = t.decode_failures;
   if (!t.event_receive_utime.empty()) {
-    m.first_receive_s = static_cast<double>(t.event_receive_utime.front() - log_start_receive_utime) * kUsToS;
-    m.last_receive_s = static_cast<double>(t.event_receive_utime.back() - log_start_receive_utime) * kUsToS;
+    m.first_receive_s = spanUs(t.event_receive_utime.front(), log_start_receive_utime) * kUsToS;
+    m.last_receive_s = spanUs(t.event_receive_utime.back(), log_start_receive_utime) * kUsToS;
     m.receive_rate_hz =
-        rateHz(t.event_receive_utime.size(), t.event_receive_utime.back() - t.event_receive_utime.front());
+        rateHz(t.event_receive_utime.size(), spanUs(t.event_receive_utime.back(), t.event_receive_utime.front()));
   } else {
     m.receive_rate_hz = kNaN;
   }
@@ -196,15 +212,15 @@ ChannelMetrics computeChannelMetrics(const ChannelTimeline& t, int64_t log_start
   if (!t.utime.empty()) {
     m.first_utime = t.utime.front();
     m.last_utime = t.utime.back();
-    m.sim_duration_s = static_cast<double>(m.last_utime - m.first_utime) * kUsToS;
-    m.sim_rate_hz = rateHz(t.utime.size(), m.last_utime - m.first_utime);
+    m.sim_duration_s = spanUs(m.last_utime, m.first_utime) * kUsToS;
+    m.sim_rate_hz = rateHz(t.utime.size(), spanUs(m.last_utime, m.first_utime));
     m.first_seq = t.seq.front();
     m.last_seq = t.seq.back();
   }
   for (size_t i = 1; i < t.utime.size(); ++i) {
     if (t.utime[i] <= t.utime[i - 1]) ++m.utime_not_increasing;
-    const int64_t step = t.seq[i] - t.seq[i - 1];
-    if (step > 1) m.seq_lost += step - 1;
+    const int64_t step = difference(t.seq[i], t.seq[i - 1]);
+    if (step > 1) m.seq_lost = sum(m.seq_lost, step - 1);
     else if (step < 0) ++m.seq_restarts;
     else if (step == 0) ++m.seq_repeats;
   }
@@ -213,8 +229,8 @@ ChannelMetrics computeChannelMetrics(const ChannelTimeline& t, int64_t log_start
     std::vector<double> lags;
     lags.reserve(t.utime.size());
     for (size_t i = 0; i < t.utime.size(); ++i) {
-      const int64_t lag_us = (t.receive_utime[i] - origin.receive_utime) - (t.utime[i] - origin.utime);
-      lags.push_back(static_cast<double>(lag_us) * kUsToMs);
+      const double lag_us = spanUs(t.receive_utime[i], origin.receive_utime) - spanUs(t.utime[i], origin.utime);
+      lags.push_back(lag_us * kUsToMs);
     }
     m.has_pacing = true;
     m.pacing_lag_ms = describe(std::move(lags));
@@ -253,12 +269,11 @@ RateCommandMetrics computeRateCommandMetrics(const std::vector<RateCommand>& com
     if (c.saturated & 2) ++m.thrust_saturated;
     ++m.gains_status[freshnessName(c.gains_status)];
     if (i == 0) continue;
-    const int64_t step_us = c.utime - commands[i - 1].utime;
-    if (step_us <= 0) {
+    if (c.utime <= commands[i - 1].utime) {
       ++m.utime_not_increasing;
       continue;
     }
-    const double period_ms = static_cast<double>(step_us) * kUsToMs;
+    const double period_ms = spanUs(c.utime, commands[i - 1].utime) * kUsToMs;
     periods.push_back(period_ms);
     jitter.push_back(std::abs(period_ms - m.nominal_period_ms));
   }
@@ -275,14 +290,15 @@ std::vector<ProcessHeartbeatMetrics> computeHeartbeatMetrics(const HeartbeatSeri
   for (size_t i = 0; i < series.records.size(); ++i) {
     const HeartbeatRecord& h = series.records[i];
     const int64_t receive = series.receive_utime[i];
-    const double receive_s = static_cast<double>(receive - log_start_receive_utime) * kUsToS;
+    const double receive_s = spanUs(receive, log_start_receive_utime) * kUsToS;
     ProcessHeartbeatMetrics& p = by_process[h.process];
     if (p.heartbeats == 0) {
       p.process = h.process;
       p.first_receive_s = receive_s;
     } else {
-      p.max_interval_s = std::max(p.max_interval_s, static_cast<double>(receive - last_receive[h.process]) * kUsToS);
-      if (h.pid == p.last.pid && h.seq > p.last.seq + 1) p.seq_lost += h.seq - p.last.seq - 1;
+      p.max_interval_s = std::max(p.max_interval_s, spanUs(receive, last_receive[h.process]) * kUsToS);
+      const int64_t step = difference(h.seq, p.last.seq);
+      if (h.pid == p.last.pid && step > 1) p.seq_lost = sum(p.seq_lost, step - 1);
     }
     ++p.heartbeats;
     p.last_receive_s = receive_s;
@@ -313,10 +329,8 @@ LogMetrics computeLogMetrics(const MetricsInput& input, const MetricsOptions& op
   m.real_time_factor = kNaN;
   if (clock) {
     m.clock_channel = clock->channel;
-    const int64_t receive_span = clock->receive_utime.back() - clock->receive_utime.front();
-    if (receive_span > 0) {
-      m.real_time_factor = static_cast<double>(clock->utime.back() - clock->utime.front()) / static_cast<double>(receive_span);
-    }
+    const double receive_span = spanUs(clock->receive_utime.back(), clock->receive_utime.front());
+    if (receive_span > 0.0) m.real_time_factor = spanUs(clock->utime.back(), clock->utime.front()) / receive_span;
   }
   for (const auto& [channel, gains] : input.gains) m.gains[channel] = computeGainsMetrics(gains);
   for (const auto& [channel, commands] : input.rate_commands) {
@@ -341,7 +355,7 @@ void writeMetricsJson(std::ostream& out, const LogMetrics& m) {
   json.memberInt("truncated_tail_bytes", m.log.truncated_tail_bytes);
   json.memberInt("first_receive_utime", m.log.first_receive_utime);
   json.memberInt("last_receive_utime", m.log.last_receive_utime);
-  json.member("receive_duration_s", static_cast<double>(m.log.last_receive_utime - m.log.first_receive_utime) * kUsToS);
+  json.member("receive_duration_s", spanUs(m.log.last_receive_utime, m.log.first_receive_utime) * kUsToS);
   json.endObject();
 
   json.key("pacing");

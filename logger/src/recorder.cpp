@@ -30,7 +30,11 @@ Recorder::Recorder(const RecorderOptions& options)
   }
   ::close(fd);
   log_->log = lcm_eventlog_create(path_.c_str(), "w");
-  if (!log_->log) throw std::invalid_argument("cannot open '" + path_ + "' for writing: " + std::strerror(errno));
+  if (!log_->log) {
+    const std::string reason = std::strerror(errno);
+    ::unlink(path_.c_str());  // the empty file we just claimed
+    throw std::invalid_argument("cannot open '" + path_ + "' for writing: " + reason);
+  }
   writer_ = std::thread(&Recorder::writerLoop, this);
 }
 
