@@ -1,5 +1,6 @@
-// sdlqr-gains: the state-dependent LQR gain solver. For now only its one-shot mode: solve once
-// at the given linearization point and print one JSON object.
+// sdlqr-gains: the state-dependent LQR gain solver. Bus mode (default): at 10 Hz of simulation
+// time, linearize at the newest STATE_EST and the controller's reference input, solve, publish
+// GAINS. One-shot mode (--once): solve at the given point and print one JSON object.
 
 #include <chrono>
 #include <iostream>
@@ -9,16 +10,98 @@
 #include "sdlqr/common/config.hpp"
 #include "sdlqr/common/lqr.hpp"
 #include "sdlqr/common/params.hpp"
+#include "sdlqr/common/validate.hpp"
+#include "sdlqr/controller/gain_scheduler.hpp"
 #include "sdlqr/controller/gains_cli.hpp"
+#include "sdlqr/controller/gains_params.hpp"
+#include "sdlqr/node/convert.hpp"
+#include "sdlqr/node/node.hpp"
+
+namespace {
+
+using namespace sdlqr;
+
+int runOnBus(const ProcessOptions& options, const LqrParams& lqr, const controller::GainsParams& params) {
+  controller::GainScheduler scheduler(lqr, params.rate_hz);
+  node::Node bus("sdlqr-gains", options);
+  const ValidationLimits limits;
+  node::Counters::Id reject_ids[static_cast<int>(RejectReason::kCount)];
+  for (int i = 0; i < static_cast<int>(RejectReason::kCount); ++i) {
+    reject_ids[i] = bus.counters().add(counterName(static_cast<RejectReason>(i)));
+  }
+  const auto params_refused_id = bus.counters().add("reject.params_invalid");
+  const auto solves_id = bus.counters().add("gains.solves");
+  const auto failures_id = bus.counters().add("gains.failures");
+  auto reject = [&](RejectReason reason) {
+    if (reason == RejectReason::kNone) return false;
+    bus.countRejected(reject_ids[static_cast<int>(reason)]);
+    return true;
+  };
+  TimeGate state_time;
+  auto last_state_wall = std::chrono::steady_clock::now();
+  bool have_state = false;
+
+  GainSet gains;
+  bus.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t& msg) {
+    const StateEstimate estimate = node::fromLcm(msg);
+    RejectReason reason = validate(estimate, limits);
+    if (reason == RejectReason::kNone) reason = state_time.check(estimate.utime, -1);
+    if (reject(reason)) return;
+    state_time.accept(estimate.utime);
+    bus.setSimTime(estimate.utime);
+    last_state_wall = std::chrono::steady_clock::now();
+    have_state = true;
+    if (estimate.status == EstimatorStatus::kInitializing || !scheduler.due(estimate)) return;
+    const auto start = std::chrono::steady_clock::now();
+    const SolveStatus status = scheduler.solve(estimate, gains);
+    gains.solve_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count();
+    bus.counters().increment(solves_id);
+    if (status != SolveStatus::kOk) {
+      // DESIGN §7: nothing is published, the controller keeps its last K.
+      bus.counters().increment(failures_id);
+      bus.countError();
+      bus.setLastError("solve failed at STATE_EST seq " + std::to_string(estimate.seq) + ": status " +
+                       std::to_string(static_cast<int>(status)));
+      return;
+    }
+    bus.publish(channel::kGains, node::toLcm(gains));
+  });
+  bus.subscribe<reference_t>(channel::kReference, [&](const reference_t& msg) {
+    const Reference reference = node::fromLcm(msg);
+    if (reject(validate(reference, limits))) return;
+    scheduler.setReference(reference);
+  });
+  bus.subscribe<params_t>(channel::kParams, [&](const params_t& msg) {
+    const ParamsUpdate update = node::fromLcm(msg);
+    if (reject(validate(update, limits))) return;
+    if (!scheduler.applyParams(update)) {
+      bus.countRejected(params_refused_id);
+      bus.setLastError("PARAMS seq " + std::to_string(update.seq) + " refused: the weights or limits are invalid");
+    }
+  }, 16);
+
+  std::cerr << "sdlqr-gains: solving at " << params.rate_hz << " Hz on " << bus.channel(channel::kStateEstimate)
+            << " (" << toString(lqr.method) << " method)\n";
+  while (bus.spin(100)) {
+    const double silent = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_state_wall).count();
+    bus.setState(!have_state ? node::ProcessState::kStarting
+                 : silent > params.state_timeout_s ? node::ProcessState::kDegraded
+                                                   : node::ProcessState::kRunning);
+  }
+  bus.shutdown();
+  return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
-  using namespace sdlqr;
   return runMain("sdlqr-gains", [&] {
     bool once = false;
     std::string state_text, input_text, method_text;
     ProcessOptions options;
     ArgParser parser("sdlqr-gains", "State-dependent LQR gain solver (paper §II-C, II-D).");
-    parser.addFlag("--once", &once, "solve once at --state/--input, print one JSON object and exit");
+    parser.addFlag("--once", &once, "solve once at --state/--input, print one JSON object and exit\n"
+                   "                          (without it: solve at 10 Hz on the bus and publish GAINS)");
     parser.addOption("--state", &state_text, "P3,Q4,V3", "linearization state px,py,pz,qw,qx,qy,qz,vx,vy,vz");
     parser.addOption("--input", &input_text, "W3,C", "linearization input wx,wy,wz,c (rad/s, m/s^2)");
     parser.addOption("--method", &method_text, "NAME", "tangent or iterative (default: lqr.method of --config)");
@@ -29,19 +112,17 @@ int main(int argc, char** argv) {
         "          \"solve_us\", \"residual\", \"x_lin\" (quaternion normalized), \"u_lin\"}\n"
         "exit codes: 0 solved, 1 solver failure (JSON still printed), 2 bad input or config");
     parser.parseOrExit(argc, argv);
-    if (!once) {
-      std::cerr << "sdlqr-gains: the 10 Hz bus mode is not built yet; use --once\n";
-      return 2;
-    }
-    if (state_text.empty() || input_text.empty()) throw std::invalid_argument("--once needs --state and --input");
-
-    LqrParams params;
-    if (!options.config_path.empty()) {
-      params = LqrParams::load(ConfigReader(loadYamlFile(options.config_path), "").child("lqr"));
-    }
+    const ConfigReader config = loadVehicleConfig(options.config_path);
+    LqrParams params = LqrParams::load(config.child("lqr"));
     if (!method_text.empty() && !parseLqrMethod(method_text, params.method)) {
       throw std::invalid_argument("--method: expected tangent or iterative, got '" + method_text + "'");
     }
+    if (!once) {
+      if (!state_text.empty() || !input_text.empty()) throw std::invalid_argument("--state and --input need --once");
+      return runOnBus(options, params, controller::GainsParams::load(config.child("gains")));
+    }
+    if (state_text.empty() || input_text.empty()) throw std::invalid_argument("--once needs --state and --input");
+
     State x = controller::parseStateList(state_text, "--state");
     const Input u = controller::parseInputList(input_text, "--input");
 
