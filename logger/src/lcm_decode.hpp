@@ -1,12 +1,13 @@
 #pragma once
-// Internal: decoding one log event into an lcm-gen class. A message is accepted only when it
-// decodes and consumes exactly its bytes; lcm-gen decoders throw on absurd array lengths
-// (std::length_error, std::bad_alloc), which counts as a failure too.
+// Internal: decoding one log event into an lcm-gen class. A message is accepted only when its
+// bytes hold a complete encoding (checked first without allocating: see wire_check.hpp), it
+// decodes, and it consumes exactly its bytes.
 
 #include <algorithm>
 #include <exception>
 
 #include "sdlqr/heartbeat_t.hpp"
+#include "sdlqr/logger/generated/lcm_csv_rows.hpp"
 #include "sdlqr/logger/heartbeat_record.hpp"
 #include "sdlqr/logger/log_reader.hpp"
 
@@ -14,6 +15,7 @@ namespace sdlqr::logger::detail {
 
 template <class LcmType>
 bool decodeEvent(const LogEvent& event, LcmType* out) {
+  if (!generated::encodingFits(static_cast<const LcmType*>(nullptr), event.data, event.size)) return false;
   try {
     return out->decode(event.data, 0, static_cast<int>(event.size)) == event.size;
   } catch (const std::exception&) {
