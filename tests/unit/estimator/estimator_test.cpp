@@ -6,6 +6,8 @@
 #include <cmath>
 #include <iostream>
 
+#include <Eigen/Cholesky>
+
 #include "estimator_run.hpp"
 #include "sdlqr/common/quaternion.hpp"
 #include "sdlqr/estimator/estimator.hpp"
@@ -139,6 +141,62 @@ TEST(Estimator, AgileFigureEightMeetsTargets) {
   EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioGated), 0);
   EXPECT_EQ(estimator.counters().rejectedTotal(), 0);
   EXPECT_EQ(run.countStatus(EstimatorStatus::kVioTimeout), 0);
+}
+
+TEST(Estimator, CovarianceMatchesTheActualErrors) {
+  // GIVEN six agile flights with different noise and bias draws
+  double nees_sum[5] = {0, 0, 0, 0, 0};
+  double nees_total = 0.0;
+  int samples = 0;
+  for (uint64_t seed = 21; seed <= 26; ++seed) {
+    SensorSpec spec;
+    spec.seed = seed;
+    SensorSimulator sensors{AnalyticTrajectory(TrajectorySpec()), spec};
+    const auto events = sensors.run(20.0);
+    Estimator estimator{EstimatorParams()};
+
+    // WHEN the estimator runs, and its 15-dim error against the truth is weighed by its own
+    // covariance every 0.1 s after 5 s (normalised estimation error squared, NEES)
+    for (const SensorEvent& e : events) {
+      if (e.kind == SensorEvent::Kind::kVio) {
+        estimator.onVio(e.vio);
+        continue;
+      }
+      const auto out = estimator.onImu(e.imu);
+      if (!out || out->utime < 5'000'000 || out->utime % 100'000 != 0) continue;
+      const TruthSample truth = sensors.truthAt(out->utime);
+      const NavState& x = estimator.state();
+      ErrorVector error;
+      error.segment<3>(kErrPos) = truth.position - x.position;
+      error.segment<3>(kErrVel) = truth.velocity - x.velocity;
+      error.segment<3>(kErrRot) = quat::boxMinus(truth.orientation, x.orientation);
+      error.segment<3>(kErrGyroBias) = sensors.gyroBiasAt(out->utime) - x.gyro_bias;
+      error.segment<3>(kErrAccelBias) = sensors.accelBiasAt(out->utime) - x.accel_bias;
+      const ErrorCovariance& p = estimator.covariance();
+      nees_total += error.dot(p.ldlt().solve(error));
+      for (int block = 0; block < 5; ++block) {
+        const Vec3 e3 = error.segment<3>(3 * block);
+        nees_sum[block] += e3.dot(p.block<3, 3>(3 * block, 3 * block).ldlt().solve(e3));
+      }
+      ++samples;
+    }
+  }
+
+  // THEN the mean NEES is near the dimension (15 overall, 3 per block). Position, velocity and
+  // attitude errors decorrelate within a few VIO frames, so ~900 samples pin their mean to about
+  // +-0.1 and a band of +-1 is safe; bias errors stay correlated for seconds, leaving only a few
+  // dozen effective samples, so their band only catches a grossly wrong bias model.
+  const double band[5][2] = {{2.0, 4.0}, {2.0, 4.0}, {2.0, 4.0}, {1.0, 9.0}, {1.0, 9.0}};
+  const char* names[5] = {"position", "velocity", "attitude", "gyro bias", "accel bias"};
+  std::cout << "[ measured ] mean NEES over " << samples << " samples: all " << nees_total / samples;
+  for (int block = 0; block < 5; ++block) std::cout << ", " << names[block] << " " << nees_sum[block] / samples;
+  std::cout << "\n";
+  EXPECT_GT(nees_total / samples, 7.5);
+  EXPECT_LT(nees_total / samples, 22.5);
+  for (int block = 0; block < 5; ++block) {
+    EXPECT_GT(nees_sum[block] / samples, band[block][0]) << names[block];
+    EXPECT_LT(nees_sum[block] / samples, band[block][1]) << names[block];
+  }
 }
 
 TEST(Estimator, FusingAtCaptureTimeBeatsFusingAtArrival) {

@@ -17,8 +17,9 @@ struct EstimatorParams {
   double accel_noise_density = 4e-3;     // [m/s^2/sqrt(Hz)]
   double gyro_bias_random_walk = 2e-5;   // [rad/s^2/sqrt(Hz)]
   double accel_bias_random_walk = 2e-4;  // [m/s^3/sqrt(Hz)]
-  double gyro_range = 34.9;              // [rad/s] |gyro| per axis beyond this is not a real sample (2000 deg/s)
-  double accel_range = 157.0;            // [m/s^2] |accel| per axis beyond this is not a real sample (16 g)
+  // Beyond the sensor's own range (2000 deg/s, 16 g, where the simulator clips) a reading is corrupt.
+  double gyro_range = 35.0;              // [rad/s] per axis
+  double accel_range = 160.0;            // [m/s^2] per axis
 
   // Initial uncertainty; position and attitude start with the first pose's own std.
   double initial_velocity_std = 1.0;     // [m/s] velocity starts at zero: covers a restart mid-flight
