@@ -160,11 +160,11 @@ MotorCommand BodyrateLoop::step(const ImuSample& sample) {
   status_.imu_utime = sample.utime;
 
   ground_detector_.update(sample.gyro, sample.accel, rotor_specific_force_, dt);
-  const bool on_ground_unarmed_or_idle =
+  const bool at_rest_not_flying =
       (status_.mode == MotorMode::kDisarmed || status_.mode == MotorMode::kIdle) && ground_detector_.atRest();
   const double leak_time = status_.mode == MotorMode::kFailsafe ? params_.failsafe.velocity_leak_time
                                                                : params_.attitude_filter.velocity_leak_time;
-  attitude_filter_.update(sample.gyro, sample.accel, dt, on_ground_unarmed_or_idle, leak_time);
+  attitude_filter_.update(sample.gyro, sample.accel, dt, at_rest_not_flying, leak_time);
   // After an impact the vehicle is not moving vertically, whatever the clipped spike integrated to.
   if (ground_detector_.impact()) attitude_filter_.stopVertical();
   const Vec3 rate = attitude_filter_.bodyRate(sample.gyro);
