@@ -36,6 +36,7 @@ enum class Rejection : int {
   kVioSuperseded,      // a pending pose replaced by a newer one before it could be fused
 };
 inline constexpr int kRejectionCount = 12;
+static_assert(static_cast<int>(Rejection::kVioSuperseded) + 1 == kRejectionCount, "one counter per reason");
 // Counter name, e.g. "reject.vio.too_old".
 const char* counterName(Rejection reason);
 
