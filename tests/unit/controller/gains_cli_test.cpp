@@ -299,7 +299,7 @@ TEST(GainsOnce, BadInputExitsWithCodeTwoAndOneLine) {
       "--once" + good_state + good_input + " --method newton",  // unknown method
       "--once" + good_state,                                    // no input
       "--once" + good_state + good_input + " --bogus",          // unknown option
-      good_state.substr(1) + good_input,                        // bus mode not built
+      good_state.substr(1) + good_input,                        // a point without --once
   };
   for (const std::string& arguments : cases) {
     const RunResult run = runGains(arguments);
