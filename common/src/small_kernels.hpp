@@ -82,8 +82,11 @@ SDLQR_SDA_INLINE bool gaussJordan(double* m) {
       pivot_row = larger ? i : pivot_row;
     }
     if (!(pivot_abs > 0.0) || !std::isfinite(pivot_abs)) return false;
+    // Columns left of p are finished unit columns (zero in rows p and pivot_row): begin at the
+    // vector boundary below p.
+    const int first = p / 4 * 4;
     if (pivot_row != p) {
-      for (int j = 0; j < S; ++j) {
+      for (int j = first; j < S; ++j) {
         const double t = m[p * S + j];
         m[p * S + j] = m[pivot_row * S + j];
         m[pivot_row * S + j] = t;
@@ -91,12 +94,12 @@ SDLQR_SDA_INLINE bool gaussJordan(double* m) {
     }
     double* __restrict pivot = m + p * S;
     const double inverse = 1.0 / pivot[p];
-    for (int j = 0; j < S; ++j) pivot[j] *= inverse;
+    for (int j = first; j < S; ++j) pivot[j] *= inverse;
     for (int i = 0; i < N; ++i) {
       if (i == p) continue;
       double* __restrict target = m + i * S;
       const double factor = target[p];
-      for (int j = 0; j < S; ++j) target[j] -= factor * pivot[j];
+      for (int j = first; j < S; ++j) target[j] -= factor * pivot[j];
     }
   }
   return true;
@@ -188,7 +191,7 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopBody(Block<N, N>& A, Block<N, N>& G
   constexpr int S = padded(N);
   constexpr int SW = 3 * S;  // [W | A | G] side by side, each block on its own vector boundary
   Block<N, SW, SW> augmented;
-  Block<N, N> Z, T, V, H_next;
+  Block<N, N> Z, D, T, V;
   DoublingOutcome outcome;
   double previous_change = HUGE_VAL;
   for (int k = 1; k <= max_doublings; ++k) {
@@ -206,11 +209,16 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopBody(Block<N, N>& A, Block<N, N>& G
     const double* Y = augmented.v + S;        // W^-1 A
     const double* WinvG = augmented.v + 2 * S;  // W^-1 G (symmetric)
 
-    // H_next = H + A^T (H Y)
+    // H += D with D = A^T (H Y); D is also the change of H for the stopping test.
     multiply<N, S, false, false, S, SW, S>(H.v, Y, Z.v);
-    std::memcpy(H_next.v, H.v, sizeof(H.v));
-    multiply<N, S, true, true, S, S, S>(A.v, Z.v, H_next.v);
-    symmetrize<N, S>(H_next.v);
+    multiply<N, S, true, false, S, S, S>(A.v, Z.v, D.v);
+    symmetrize<N, S>(D.v);
+    double change_squared = 0.0, norm_squared = 0.0;
+    for (int i = 0; i < N * S; ++i) {  // padding columns are zero in both
+      H.v[i] += D.v[i];
+      change_squared += D.v[i] * D.v[i];
+      norm_squared += H.v[i] * H.v[i];
+    }
 
     // G += A (W^-1 G) A^T, formed as A (A (W^-1 G))^T since W^-1 G is symmetric.
     multiply<N, S, false, false, S, SW, S>(A.v, WinvG, T.v);
@@ -225,9 +233,7 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopBody(Block<N, N>& A, Block<N, N>& G
     multiply<N, S, false, false, S, SW, S>(A.v, Y, T.v);
     A = T;
 
-    double norm = 0.0;
-    const double change = frobeniusDifference<N, S>(H.v, H_next.v, norm) / norm;
-    H = H_next;
+    const double change = std::sqrt(change_squared / norm_squared);
     outcome.doublings = k;
     outcome.last_change = change;
     if (!std::isfinite(change)) {
