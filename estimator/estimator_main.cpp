@@ -34,6 +34,8 @@ class CounterBridge {
     fused_id_ = node.counters().add("vio.fused");
     init_id_ = node.counters().add("estimator.initializations");
     clock_reset_id_ = node.counters().add("estimator.clock_resets");
+    vio_reset_id_ = node.counters().add("estimator.vio_resets");
+    clipping_id_ = node.counters().add("imu.clipping");
     nan_output_id_ = node.counters().add("error.non_finite_output");
   }
 
@@ -45,6 +47,8 @@ class CounterBridge {
     node_.counters().increment(fused_id_, now.vio_fused - seen_.vio_fused);
     node_.counters().increment(init_id_, now.initializations - seen_.initializations);
     node_.counters().increment(clock_reset_id_, now.clock_resets - seen_.clock_resets);
+    node_.counters().increment(vio_reset_id_, now.vio_resets - seen_.vio_resets);
+    node_.counters().increment(clipping_id_, now.accel_clipping - seen_.accel_clipping);
     seen_ = now;
   }
 
@@ -61,6 +65,8 @@ class CounterBridge {
   sdlqr::node::Counters::Id fused_id_ = 0;
   sdlqr::node::Counters::Id init_id_ = 0;
   sdlqr::node::Counters::Id clock_reset_id_ = 0;
+  sdlqr::node::Counters::Id vio_reset_id_ = 0;
+  sdlqr::node::Counters::Id clipping_id_ = 0;
   sdlqr::node::Counters::Id nan_output_id_ = 0;
 };
 

@@ -25,6 +25,8 @@ ImuDeltaSplit split(const ImuDelta& delta, double fraction) {
   out.first.delta_velocity = fraction * delta.delta_velocity;
   out.rest.dt = delta.dt - out.first.dt;
   out.rest.delta_angle = delta.delta_angle - out.first.delta_angle;
+  out.first.accel_clipped = fraction * delta.accel_clipped;
+  out.rest.accel_clipped = delta.accel_clipped - out.first.accel_clipped;
   // The rest starts where the body has already turned by the first part's angle.
   out.rest.delta_velocity =
       quat::rotationMatrix(quat::exp(out.first.delta_angle)).transpose() * ((1.0 - fraction) * delta.delta_velocity);
@@ -37,6 +39,7 @@ ProcessNoise ProcessNoise::from(const EstimatorParams& params) {
   n.accel_var = params.accel_noise_density * params.accel_noise_density;
   n.gyro_bias_var = params.gyro_bias_random_walk * params.gyro_bias_random_walk;
   n.accel_bias_var = params.accel_bias_random_walk * params.accel_bias_random_walk;
+  n.clip_velocity_var = params.clip_velocity_std * params.clip_velocity_std;
   n.gravity = Vec3(0.0, 0.0, -params.gravity);
   return n;
 }
@@ -76,6 +79,7 @@ void propagate(NavState& state, ErrorCovariance& covariance, const ImuDelta& del
   const double dt = delta.dt;
   if (!(dt > 0.0)) return;
   const ErrorCovariance f = errorTransition(state, delta);
+  const Mat3 rot = quat::rotationMatrix(state.orientation);
   propagateNominal(state, delta, noise.gravity);
 
   ErrorCovariance propagated = f * covariance * f.transpose();
@@ -89,13 +93,23 @@ void propagate(NavState& state, ErrorCovariance& covariance, const ImuDelta& del
   propagated.block<3, 3>(kErrRot, kErrRot) += (noise.gyro_var * dt) * eye;
   propagated.block<3, 3>(kErrGyroBias, kErrGyroBias) += (noise.gyro_bias_var * dt) * eye;
   propagated.block<3, 3>(kErrAccelBias, kErrAccelBias) += (noise.accel_bias_var * dt) * eye;
+  if (!delta.accel_clipped.isZero()) {
+    // What a saturated accelerometer missed is unknown in size but confined to the clipped axes;
+    // taken as one impulse mid-interval, it moves the position by dt/2 times the velocity.
+    const Vec3 missed_var_body = noise.clip_velocity_var * delta.accel_clipped;
+    const Mat3 missed = rot * missed_var_body.asDiagonal() * rot.transpose();
+    propagated.block<3, 3>(kErrPos, kErrPos) += (0.25 * dt * dt) * missed;
+    propagated.block<3, 3>(kErrPos, kErrVel) += (0.5 * dt) * missed;
+    propagated.block<3, 3>(kErrVel, kErrPos) += (0.5 * dt) * missed;
+    propagated.block<3, 3>(kErrVel, kErrVel) += missed;
+  }
   covariance = 0.5 * (propagated + propagated.transpose());
 }
 
 PoseUpdateResult updatePose(NavState& state, ErrorCovariance& covariance, const PoseMeasurement& pose,
                             double gate_chi2) {
-  using Mat6 = Eigen::Matrix<double, 6, 6>;
-  using Vec6 = Eigen::Matrix<double, 6, 1>;
+  using Mat6 = PoseMatrix;
+  using Vec6 = PoseVector;
   using Gain = Eigen::Matrix<double, kErrorDim, 6>;
   using Selection = Eigen::Matrix<double, 6, kErrorDim>;
 
@@ -113,6 +127,8 @@ PoseUpdateResult updatePose(NavState& state, ErrorCovariance& covariance, const 
   const Mat6 innovation_cov = h * covariance * h.transpose() + noise;
   const Eigen::LLT<Mat6> llt(innovation_cov);
   PoseUpdateResult result;
+  result.innovation = residual;
+  result.innovation_cov = innovation_cov;
   if (llt.info() != Eigen::Success) return result;
   result.mahalanobis_sq = residual.dot(llt.solve(residual));
   if (!(result.mahalanobis_sq <= gate_chi2)) return result;

@@ -13,6 +13,9 @@ bool allFinite(const Vec3& v) { return v.allFinite(); }
 
 int64_t secondsToUs(double seconds) { return static_cast<int64_t>(std::llround(seconds * 1e6)); }
 
+// [std] a gated run's innovation drift corrects the velocity only beyond this many of its stds.
+constexpr double kDriftSignificance = 3.0;
+
 }  // namespace
 
 const char* counterName(Rejection reason) {
@@ -43,8 +46,9 @@ Estimator::Estimator(const EstimatorParams& params)
     : params_(params),
       noise_(ProcessNoise::from(params)),
       period_us_(params.outputPeriodUs()),
-      downsampler_(params.outputPeriodUs()),
-      history_(params.valid() ? params.historyCapacity() : 2) {
+      downsampler_(params.outputPeriodUs(), params.accel_clip_level),
+      history_(params.valid() ? params.historyCapacity() : 2),
+      gated_run_(params.gate_chi2, secondsToUs(params.vio_reset_after)) {
   const std::string reason = params.invalidReason();
   if (!reason.empty()) throw std::invalid_argument("estimator." + reason);
 }
@@ -56,6 +60,7 @@ void Estimator::reset() {
   has_fused_ = false;
   last_fused_seq_ = -1;
   pending_vio_.reset();
+  gated_run_.clear();
   timing_rejects_in_a_row_ = 0;
   status_ = EstimatorStatus::kInitializing;
 }
@@ -111,6 +116,7 @@ std::optional<StateEstimate> Estimator::onImu(const ImuSample& sample) {
     return std::nullopt;
   }
   if (!imuTimingAcceptable(sample)) return std::nullopt;
+  if (sample.accel.cwiseAbs().maxCoeff() >= params_.accel_clip_level) ++counters_.accel_clipping;
 
   if (!downsampler_.started()) {
     // The stream's first instant gets a history entry too, so a pose captured exactly then (the
@@ -195,14 +201,27 @@ PoseMeasurement Estimator::measurementOf(const VioPose& pose) const {
   return z;
 }
 
-ErrorCovariance Estimator::initialCovariance(const PoseMeasurement& pose) const {
+void Estimator::restartFrom(const PoseMeasurement& pose, const Vec3& velocity, const Vec3& velocity_var,
+                            NavState& state, ErrorCovariance& covariance) const {
   ErrorCovariance p = ErrorCovariance::Zero();
   p.diagonal().segment<3>(kErrPos).setConstant(pose.position_var);
-  p.diagonal().segment<3>(kErrVel).setConstant(params_.initial_velocity_std * params_.initial_velocity_std);
+  p.diagonal().segment<3>(kErrVel) = velocity_var;
   p.diagonal().segment<3>(kErrRot).setConstant(pose.attitude_var);
-  p.diagonal().segment<3>(kErrGyroBias).setConstant(params_.initial_gyro_bias_std * params_.initial_gyro_bias_std);
-  p.diagonal().segment<3>(kErrAccelBias).setConstant(params_.initial_accel_bias_std * params_.initial_accel_bias_std);
-  return p;
+  NavState start;
+  if (initialized_) {
+    // Neither a VIO gap nor a wrong position / velocity invalidates the bias estimates.
+    start.gyro_bias = state.gyro_bias;
+    start.accel_bias = state.accel_bias;
+    p.block<6, 6>(kErrGyroBias, kErrGyroBias) = covariance.block<6, 6>(kErrGyroBias, kErrGyroBias);
+  } else {
+    p.diagonal().segment<3>(kErrGyroBias).setConstant(params_.initial_gyro_bias_std * params_.initial_gyro_bias_std);
+    p.diagonal().segment<3>(kErrAccelBias).setConstant(params_.initial_accel_bias_std * params_.initial_accel_bias_std);
+  }
+  start.position = pose.position;
+  start.orientation = pose.orientation;
+  start.velocity = velocity;
+  state = start;
+  covariance = p;
 }
 
 VioOutcome Estimator::fuseAtCaptureTime(const VioPose& pose, bool initialize) {
@@ -225,22 +244,34 @@ VioOutcome Estimator::fuseAtCaptureTime(const VioPose& pose, bool initialize) {
     rest = parts.rest;
   }
 
+  VioOutcome outcome = VioOutcome::kFused;
   if (initialize) {
-    // Attitude and position from the pose, velocity zero; a re-initialisation keeps the bias
-    // estimates, which a VIO gap does not invalidate.
-    ErrorCovariance fresh = initialCovariance(z);
-    NavState start;
-    if (initialized_) {
-      start.gyro_bias = state.gyro_bias;
-      start.accel_bias = state.accel_bias;
-      fresh.block<6, 6>(kErrGyroBias, kErrGyroBias) = covariance.block<6, 6>(kErrGyroBias, kErrGyroBias);
+    // Velocity zero: its std covers a restart in mid-flight.
+    const double velocity_var = params_.initial_velocity_std * params_.initial_velocity_std;
+    restartFrom(z, Vec3::Zero(), Vec3::Constant(velocity_var), state, covariance);
+    gated_run_.clear();
+    outcome = VioOutcome::kInitialized;
+  } else {
+    const PoseUpdateResult update = updatePose(state, covariance, z, params_.gate_chi2);
+    if (update.accepted) {
+      gated_run_.clear();
+    } else if (!gated_run_.add(t, update)) {
+      return reject(Rejection::kVioGated);
+    } else {
+      // The run's poses agree and the filter does not: trust the VIO. The innovation's drift
+      // over the run measures the filter's velocity error; it is applied where it stands out of
+      // the regression's noise (a VIO frame jump carries no velocity error, and that noise would
+      // only spoil a good velocity). The velocity is then uncertain by that noise and by no less
+      // than the filter thought before (the run may have begun after the velocity went wrong).
+      const double drift_var = gated_run_.positionDriftRateVariance(z.position_var);
+      const Vec3 drift = gated_run_.positionDriftRate();
+      const Vec3 significant = (drift.array().square() > kDriftSignificance * kDriftSignificance * drift_var)
+                                   .select(drift, Vec3::Zero());
+      const Vec3 velocity_var = covariance.diagonal().segment<3>(kErrVel) + Vec3::Constant(drift_var);
+      restartFrom(z, state.velocity + significant, velocity_var, state, covariance);
+      gated_run_.clear();
+      outcome = VioOutcome::kReset;
     }
-    start.position = z.position;
-    start.orientation = z.orientation;
-    state = start;
-    covariance = fresh;
-  } else if (!updatePose(state, covariance, z, params_.gate_chi2).accepted) {
-    return reject(Rejection::kVioGated);
   }
 
   int updated = base;
@@ -262,13 +293,13 @@ VioOutcome Estimator::fuseAtCaptureTime(const VioPose& pose, bool initialize) {
   has_fused_ = true;
   last_fused_capture_ = t;
   last_fused_seq_ = pose.seq;
-  if (initialize) {
-    ++counters_.initializations;
-  } else {
-    ++counters_.vio_fused;
+  switch (outcome) {
+    case VioOutcome::kInitialized: ++counters_.initializations; break;
+    case VioOutcome::kReset: ++counters_.vio_resets; break;
+    default: ++counters_.vio_fused; break;
   }
   updateStatus();
-  return initialize ? VioOutcome::kInitialized : VioOutcome::kFused;
+  return outcome;
 }
 
 // ---- output -------------------------------------------------------------------------------------

@@ -21,9 +21,9 @@ int EstimatorParams::historyCapacity() const {
 
 EstimatorParams EstimatorParams::load(const ConfigReader& estimator) {
   estimator.allowOnly({"gyro_noise_density", "accel_noise_density", "gyro_bias_random_walk", "accel_bias_random_walk",
-                       "gyro_range", "accel_range", "initial_velocity_std", "initial_gyro_bias_std",
+                       "gyro_range", "accel_range", "accel_clip_level", "clip_velocity_std", "initial_velocity_std", "initial_gyro_bias_std",
                        "initial_accel_bias_std", "vio_position_std", "vio_attitude_std", "output_rate",
-                       "history_length", "vio_timeout", "reinit_after", "gate_chi2", "quaternion_norm_tolerance",
+                       "history_length", "vio_timeout", "reinit_after", "gate_chi2", "vio_reset_after", "quaternion_norm_tolerance",
                        "imu_max_gap", "imu_time_reset_count", "gravity"});
   EstimatorParams p;
   estimator.read("gyro_noise_density", p.gyro_noise_density);
@@ -32,6 +32,8 @@ EstimatorParams EstimatorParams::load(const ConfigReader& estimator) {
   estimator.read("accel_bias_random_walk", p.accel_bias_random_walk);
   estimator.read("gyro_range", p.gyro_range);
   estimator.read("accel_range", p.accel_range);
+  estimator.read("accel_clip_level", p.accel_clip_level);
+  estimator.read("clip_velocity_std", p.clip_velocity_std);
   estimator.read("initial_velocity_std", p.initial_velocity_std);
   estimator.read("initial_gyro_bias_std", p.initial_gyro_bias_std);
   estimator.read("initial_accel_bias_std", p.initial_accel_bias_std);
@@ -42,6 +44,7 @@ EstimatorParams EstimatorParams::load(const ConfigReader& estimator) {
   estimator.read("vio_timeout", p.vio_timeout);
   estimator.read("reinit_after", p.reinit_after);
   estimator.read("gate_chi2", p.gate_chi2);
+  estimator.read("vio_reset_after", p.vio_reset_after);
   estimator.read("quaternion_norm_tolerance", p.quaternion_norm_tolerance);
   estimator.read("imu_max_gap", p.imu_max_gap);
   estimator.read("imu_time_reset_count", p.imu_time_reset_count);
@@ -61,6 +64,11 @@ std::string EstimatorParams::invalidReason() const {
   if (!positive(accel_bias_random_walk)) return "accel_bias_random_walk: must be finite and > 0";
   if (!positive(gyro_range)) return "gyro_range: must be finite and > 0";
   if (!positive(accel_range)) return "accel_range: must be finite and > 0";
+  // Above accel_range a reading is rejected, so a higher clip level could never be seen.
+  if (!(positive(accel_clip_level) && accel_clip_level <= accel_range)) {
+    return "accel_clip_level: must be > 0 and <= accel_range";
+  }
+  if (!positive(clip_velocity_std)) return "clip_velocity_std: must be finite and > 0";
   if (!positive(initial_velocity_std)) return "initial_velocity_std: must be finite and > 0";
   if (!positive(initial_gyro_bias_std)) return "initial_gyro_bias_std: must be finite and > 0";
   if (!positive(initial_accel_bias_std)) return "initial_accel_bias_std: must be finite and > 0";
@@ -81,6 +89,10 @@ std::string EstimatorParams::invalidReason() const {
   if (!positive(vio_timeout)) return "vio_timeout: must be finite and > 0";
   if (!(std::isfinite(reinit_after) && reinit_after > vio_timeout)) return "reinit_after: must be finite and > vio_timeout";
   if (!positive(gate_chi2)) return "gate_chi2: must be finite and > 0";
+  // Past reinit_after the next pose re-initialises anyway; a reset must come before that.
+  if (!(positive(vio_reset_after) && vio_reset_after < reinit_after)) {
+    return "vio_reset_after: must be > 0 and < reinit_after";
+  }
   if (!(std::isfinite(quaternion_norm_tolerance) && quaternion_norm_tolerance > 0.0 && quaternion_norm_tolerance < 0.5)) {
     return "quaternion_norm_tolerance: must be in (0, 0.5)";
   }

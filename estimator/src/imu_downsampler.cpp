@@ -1,5 +1,7 @@
 #include "sdlqr/estimator/imu_downsampler.hpp"
 
+#include <cmath>
+
 #include "sdlqr/common/quaternion.hpp"
 
 namespace sdlqr::estimator {
@@ -34,6 +36,12 @@ void ImuDownsampler::accumulate(const ImuSample& sample, int64_t from, int64_t t
   window_.delta.delta_velocity += quat::rotate(half_turn, force * h);
   turn_ = quat::multiply(turn_, quat::exp(h * rate)).normalized();
   window_.delta.dt += h;
+}
+
+void ImuDownsampler::countClipping(const ImuSample& sample) {
+  for (int axis = 0; axis < 3; ++axis) {
+    if (std::abs(sample.accel[axis]) >= accel_clip_level_) window_.delta.accel_clipped[axis] += 1.0;
+  }
 }
 
 const ImuWindow& ImuDownsampler::closeWindow(int64_t seq) {

@@ -172,5 +172,49 @@ TEST(ErrorStateEkf, SplitPartsRecomposeTheWindow) {
   EXPECT_LT((a.velocity - b.velocity).norm(), 1e-5);  // differs only by bias terms of second order
 }
 
+TEST(ErrorStateEkf, SplitSharesClippedSamplesInProportion) {
+  ImuDelta whole = agileDelta();
+  whole.accel_clipped = Vec3(0.0, 2.0, 1.0);
+  const ImuDeltaSplit parts = split(whole, 0.25);
+  EXPECT_TRUE(parts.first.accel_clipped.isApprox(Vec3(0.0, 0.5, 0.25)));
+  EXPECT_TRUE((parts.first.accel_clipped + parts.rest.accel_clipped).isApprox(whole.accel_clipped));
+}
+
+TEST(ErrorStateEkf, ClippedSamplesAddTheMissedVelocityVarianceAlongTheirBodyAxis) {
+  // GIVEN a tilted state, a window with two samples clipped on the body z axis, and a filter
+  // whose only noise source is clipping
+  const NavState x = agileState();
+  ImuDelta delta = agileDelta();
+  ProcessNoise noise;
+  noise.gravity = Vec3(0.0, 0.0, -9.81);
+  noise.clip_velocity_var = 0.09;
+  ErrorCovariance without = ErrorCovariance::Identity() * 1e-4;
+  ErrorCovariance with = without;
+  NavState a = x, b = x;
+  propagate(a, without, delta, noise);
+  delta.accel_clipped = Vec3(0.0, 0.0, 2.0);
+  propagate(b, with, delta, noise);
+
+  // THEN the state is propagated alike (the missed part has zero mean), and the covariance grows
+  // by 2 x 0.09 m^2/s^2 along the world direction of body z, as an impulse at mid-window moves
+  // the position by dt / 2 times it
+  EXPECT_EQ(a.velocity, b.velocity);
+  const Vec3 body_z = quat::bodyZ(x.orientation);
+  const Mat3 expected = 0.18 * body_z * body_z.transpose();
+  const double dt = delta.dt;
+  const ErrorCovariance added = with - without;
+  const Mat3 velocity = added.block<3, 3>(kErrVel, kErrVel);
+  const Mat3 position_velocity = added.block<3, 3>(kErrPos, kErrVel);
+  const Mat3 position = added.block<3, 3>(kErrPos, kErrPos);
+  const Mat3 attitude = added.block<3, 3>(kErrRot, kErrRot);
+  EXPECT_TRUE(velocity.isApprox(expected, 1e-12));
+  EXPECT_TRUE(position_velocity.isApprox(0.5 * dt * expected, 1e-12));
+  EXPECT_TRUE(position.isApprox(0.25 * dt * dt * expected, 1e-12));
+  EXPECT_LT(attitude.norm(), 1e-15);
+  // (nothing is missed across the body z axis)
+  const Vec3 across = quat::rotate(x.orientation, Vec3(1.0, 0.0, 0.0));
+  EXPECT_NEAR(across.dot(velocity * across), 0.0, 1e-15);
+}
+
 }  // namespace
 }  // namespace sdlqr::estimator

@@ -46,12 +46,15 @@ namespace sdlqr::estimator::test {
 namespace {
 
 TEST(EstimatorAllocation, OnImuAndOnVioNeverAllocate) {
-  // GIVEN a constructed estimator and an agile flight with a VIO dropout, a re-initialisation
-  // and bad messages, all generated beforehand
+  // GIVEN a constructed estimator and an agile flight with a VIO dropout, a re-initialisation,
+  // bad messages, a clipped accelerometer sample and a VIO frame jump (gated poses, a reset),
+  // all generated beforehand
   SensorSimulator sensors{AnalyticTrajectory(TrajectorySpec()), SensorSpec()};
   std::vector<SensorEvent> events = sensors.run(12.0);
   for (SensorEvent& e : events) {
     if (e.kind == SensorEvent::Kind::kVio && e.vio.seq % 50 == 7) e.vio.orientation *= 2.0;  // rejected
+    if (e.kind == SensorEvent::Kind::kVio && e.vio.utime >= 10'000'000) e.vio.position.x() += 0.3;
+    if (e.kind == SensorEvent::Kind::kImu && e.imu.utime == 9'000'000) e.imu.accel.z() = 156.9;
   }
   Estimator estimator{EstimatorParams()};
 
@@ -73,6 +76,8 @@ TEST(EstimatorAllocation, OnImuAndOnVioNeverAllocate) {
   EXPECT_EQ(g_allocations.load(), 0);
   EXPECT_GT(outputs, 2900);
   EXPECT_EQ(estimator.counters().initializations, 2);
+  EXPECT_EQ(estimator.counters().accel_clipping, 1);
+  EXPECT_EQ(estimator.counters().vio_resets, 1);
   EXPECT_GT(estimator.counters().rejectedFor(Rejection::kVioBadQuaternion), 0);
   EXPECT_GT(estimator.counters().vio_fused, 250);
 }

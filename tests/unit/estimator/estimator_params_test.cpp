@@ -27,6 +27,10 @@ TEST(EstimatorParams, DefaultsAreValidAndMatchTheAgreedSensorModel) {
   EXPECT_EQ(p.accel_noise_density, 4e-3);
   EXPECT_EQ(p.gyro_bias_random_walk, 2e-5);
   EXPECT_EQ(p.accel_bias_random_walk, 2e-4);
+  // The simulator's accelerometer clips at 156.9 m/s^2: a reading there must count as clipped,
+  // and no reading below its range may be rejected as corrupt.
+  EXPECT_LT(p.accel_clip_level, 156.9);
+  EXPECT_GT(p.accel_range, 156.9);
   EXPECT_EQ(p.output_rate, 250.0);
   EXPECT_EQ(p.outputPeriodUs(), 4000);
   EXPECT_GE(p.history_length, 0.15);
@@ -45,9 +49,10 @@ TEST(EstimatorParams, HistoryCapacityReachesHistoryLengthBack) {
 TEST(EstimatorParams, LoadsEveryKey) {
   const EstimatorParams p = loadText(
       "{gyro_noise_density: 1e-3, accel_noise_density: 2e-2, gyro_bias_random_walk: 3e-5,"
-      " accel_bias_random_walk: 4e-4, gyro_range: 30, accel_range: 100, initial_velocity_std: 0.5,"
+      " accel_bias_random_walk: 4e-4, gyro_range: 30, accel_range: 100, accel_clip_level: 95, clip_velocity_std: 0.5,"
+      " initial_velocity_std: 0.5,"
       " initial_gyro_bias_std: 0.03, initial_accel_bias_std: 0.2, vio_position_std: 0.02, vio_attitude_std: 0.01,"
-      " output_rate: 200, history_length: 0.3, vio_timeout: 0.4, reinit_after: 1.5, gate_chi2: 20,"
+      " output_rate: 200, history_length: 0.3, vio_timeout: 0.4, reinit_after: 1.5, gate_chi2: 20, vio_reset_after: 0.25,"
       " quaternion_norm_tolerance: 0.02, imu_max_gap: 0.05, imu_time_reset_count: 10, gravity: 9.8}");
   EXPECT_EQ(p.gyro_noise_density, 1e-3);
   EXPECT_EQ(p.accel_noise_density, 2e-2);
@@ -55,6 +60,8 @@ TEST(EstimatorParams, LoadsEveryKey) {
   EXPECT_EQ(p.accel_bias_random_walk, 4e-4);
   EXPECT_EQ(p.gyro_range, 30.0);
   EXPECT_EQ(p.accel_range, 100.0);
+  EXPECT_EQ(p.accel_clip_level, 95.0);
+  EXPECT_EQ(p.clip_velocity_std, 0.5);
   EXPECT_EQ(p.initial_velocity_std, 0.5);
   EXPECT_EQ(p.initial_gyro_bias_std, 0.03);
   EXPECT_EQ(p.initial_accel_bias_std, 0.2);
@@ -65,6 +72,7 @@ TEST(EstimatorParams, LoadsEveryKey) {
   EXPECT_EQ(p.vio_timeout, 0.4);
   EXPECT_EQ(p.reinit_after, 1.5);
   EXPECT_EQ(p.gate_chi2, 20.0);
+  EXPECT_EQ(p.vio_reset_after, 0.25);
   EXPECT_EQ(p.quaternion_norm_tolerance, 0.02);
   EXPECT_EQ(p.imu_max_gap, 0.05);
   EXPECT_EQ(p.imu_time_reset_count, 10);
@@ -79,6 +87,10 @@ TEST(EstimatorParams, BadValuesNameTheirKey) {
   EXPECT_EQ(errorKeyOf("{history_length: 0.1}"), "estimator.history_length");  // shorter than VIO latency + margin
   EXPECT_EQ(errorKeyOf("{vio_timeout: 0.5, reinit_after: 0.4}"), "estimator.reinit_after");
   EXPECT_EQ(errorKeyOf("{gate_chi2: 0}"), "estimator.gate_chi2");
+  EXPECT_EQ(errorKeyOf("{accel_range: 100, accel_clip_level: 120}"), "estimator.accel_clip_level");  // never seen
+  EXPECT_EQ(errorKeyOf("{clip_velocity_std: 0}"), "estimator.clip_velocity_std");
+  EXPECT_EQ(errorKeyOf("{reinit_after: 1.0, vio_reset_after: 1.0}"), "estimator.vio_reset_after");
+  EXPECT_EQ(errorKeyOf("{vio_reset_after: -0.3}"), "estimator.vio_reset_after");
   EXPECT_EQ(errorKeyOf("{quaternion_norm_tolerance: 0.7}"), "estimator.quaternion_norm_tolerance");
   EXPECT_EQ(errorKeyOf("{imu_time_reset_count: 0}"), "estimator.imu_time_reset_count");
   EXPECT_EQ(errorKeyOf("{gravity: .nan}"), "estimator.gravity");

@@ -109,5 +109,31 @@ TEST(ImuDownsampler, AGapClosesEveryWindowItSpans) {
   EXPECT_EQ(downsampler.lastSampleTime(), 15000);
 }
 
+TEST(ImuDownsampler, CountsClippedAccelerometerSamplesInTheWindowOfTheirTimestamp) {
+  // GIVEN a 149 m/s^2 clip level and 1 kHz samples of which three reach it: one in the middle of
+  // the first window (z), one exactly on the edge closing the second (x, negative), and one just
+  // below the level
+  ImuDownsampler downsampler(4000, 149.0);
+  std::vector<ImuSample> samples;
+  for (int64_t k = 0; k <= 12; ++k) {
+    Vec3 accel(0.0, 0.0, 9.81);
+    if (k == 2) accel.z() = 156.9;
+    if (k == 8) accel.x() = -149.0;
+    if (k == 10) accel.y() = 148.9;
+    samples.push_back(sampleAt(1000 * k, Vec3::Zero(), accel, k));
+  }
+  // WHEN they are added
+  const auto windows = feed(downsampler, samples);
+  // THEN each clipped sample is counted once, on its own axis, in the window holding its
+  // timestamp (a sample on an edge belongs to the window it closes); the near miss is not
+  ASSERT_EQ(windows.size(), 3u);
+  EXPECT_EQ(windows[0].delta.accel_clipped, Vec3(0.0, 0.0, 1.0));
+  EXPECT_EQ(windows[1].delta.accel_clipped, Vec3(1.0, 0.0, 0.0));
+  EXPECT_EQ(windows[2].delta.accel_clipped, Vec3::Zero());
+  // AND without a clip level nothing counts
+  ImuDownsampler unlimited(4000);
+  for (const ImuWindow& w : feed(unlimited, samples)) EXPECT_EQ(w.delta.accel_clipped, Vec3::Zero());
+}
+
 }  // namespace
 }  // namespace sdlqr::estimator

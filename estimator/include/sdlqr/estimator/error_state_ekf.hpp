@@ -13,12 +13,15 @@ struct ProcessNoise {
   double accel_var = 0.0;       // [m^2/s^3]
   double gyro_bias_var = 0.0;   // [rad^2/s^3]
   double accel_bias_var = 0.0;  // [m^2/s^5]
+  double clip_velocity_var = 0.0;  // [m^2/s^2] velocity the accelerometer may miss per clipped sample
   Vec3 gravity = Vec3::Zero();  // [m/s^2] world, z up: (0, 0, -g)
 
   static ProcessNoise from(const EstimatorParams& params);
 };
 
-// Advances state and covariance over `delta`, removing the estimated biases from it first.
+// Advances state and covariance over `delta`, removing the estimated biases from it first. Clipped
+// accelerometer samples in `delta` add clip_velocity_var each to the velocity variance along
+// their body axis (as an impulse at mid-interval, so position and its correlation follow).
 void propagate(NavState& state, ErrorCovariance& covariance, const ImuDelta& delta, const ProcessNoise& noise);
 
 // The two halves of propagate(), exposed for the Jacobian test: the nominal state update, and
@@ -33,9 +36,14 @@ struct PoseMeasurement {
   double attitude_var = 0.0;          // [rad^2] per axis
 };
 
+using PoseVector = Eigen::Matrix<double, 6, 1>;
+using PoseMatrix = Eigen::Matrix<double, 6, 6>;
+
 struct PoseUpdateResult {
   bool accepted = false;
   double mahalanobis_sq = 0.0;  // r^T S^-1 r of the 6-dof innovation
+  PoseVector innovation = PoseVector::Zero();             // r: [position (world), attitude (body)]
+  PoseMatrix innovation_cov = PoseMatrix::Zero();         // S = H P H^T + R
 };
 
 // Fuses a pose taken at the state's time. When the innovation's squared Mahalanobis distance

@@ -16,6 +16,7 @@
 #include "sdlqr/common/messages.hpp"
 #include "sdlqr/estimator/error_state_ekf.hpp"
 #include "sdlqr/estimator/estimator_params.hpp"
+#include "sdlqr/estimator/gated_pose_run.hpp"
 #include "sdlqr/estimator/imu_downsampler.hpp"
 #include "sdlqr/estimator/state_history.hpp"
 
@@ -44,6 +45,8 @@ enum class VioOutcome {
   kFused,          // updated at the capture time, newer states recomputed
   kInitialized,    // first pose (or first after a long gap): the filter starts from it
   kPending,        // capture time inside the IMU window still being accumulated: fused when it closes
+  kReset,          // gated, but gated poses have agreed with one another for vio_reset_after: the
+                   // filter was wrong, and was reset to this pose (position, attitude, velocity)
   kRejected,       // see counters() and lastRejection()
 };
 
@@ -54,6 +57,8 @@ struct EstimatorCounters {
   int64_t vio_fused = 0;
   int64_t initializations = 0;   // includes re-initialisations after a long VIO gap
   int64_t clock_resets = 0;      // restarts on a new IMU clock (simulator restarted, log replayed)
+  int64_t vio_resets = 0;        // resets to the VIO after a run of agreeing gated poses
+  int64_t accel_clipping = 0;    // accepted IMU samples with an accelerometer axis at the clip level
 
   int64_t rejectedTotal() const;
   int64_t rejectedFor(Rejection reason) const { return rejected[static_cast<size_t>(reason)]; }
@@ -92,7 +97,10 @@ class Estimator {
   // Initialises or fuses at pose.utime, which the history must cover; returns the outcome.
   VioOutcome fuseAtCaptureTime(const VioPose& pose, bool initialize);
   PoseMeasurement measurementOf(const VioPose& pose) const;
-  ErrorCovariance initialCovariance(const PoseMeasurement& pose) const;
+  // Position and attitude from the pose, the given velocity; the bias estimates are kept once
+  // there are any. No correlation survives but the biases' among themselves.
+  void restartFrom(const PoseMeasurement& pose, const Vec3& velocity, const Vec3& velocity_var, NavState& state,
+                   ErrorCovariance& covariance) const;
   void updateStatus();
   StateEstimate makeOutput();
   VioOutcome reject(Rejection reason);  // counts and returns kRejected
@@ -102,6 +110,7 @@ class Estimator {
   int64_t period_us_;
   ImuDownsampler downsampler_;
   StateHistory history_;
+  GatedPoseRun gated_run_;
   EstimatorCounters counters_;
   std::optional<Rejection> last_rejection_;
 

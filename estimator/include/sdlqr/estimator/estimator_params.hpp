@@ -20,6 +20,14 @@ struct EstimatorParams {
   // Beyond the sensor's own range (2000 deg/s, 16 g, where the simulator clips) a reading is corrupt.
   double gyro_range = 35.0;              // [rad/s] per axis
   double accel_range = 160.0;            // [m/s^2] per axis
+  // A reading at or beyond the clip level (per axis) is the sensor saturating: the sample's delta
+  // velocity then misses an unknown part of the specific force (a touchdown's impulse), which the
+  // filter covers by adding clip_velocity_std^2 per clipped sample to the velocity variance. The
+  // simulator's ground stops a 0.4 m/s descent within one 1 ms step: one sample reads 16 g and
+  // 0.25 m/s go missing; much more than ~0.3 m/s lets VIO noise shortly after the impact kick
+  // the velocity, much less leaves the miss to be found by the gated-pose reset.
+  double accel_clip_level = 149.0;       // [m/s^2] 0.95 x the simulator's 16 g range (156.9)
+  double clip_velocity_std = 0.3;        // [m/s] per clipped sample along the clipped body axis
 
   // Initial uncertainty; position and attitude start with the first pose's own std.
   double initial_velocity_std = 1.0;     // [m/s] velocity starts at zero: covers a restart mid-flight
@@ -35,6 +43,9 @@ struct EstimatorParams {
   double vio_timeout = 0.5;              // [s] no pose fused for this long: status VIO_TIMEOUT
   double reinit_after = 2.0;             // [s] no pose fused for this long: the next pose re-initialises
   double gate_chi2 = 28.0;               // [-] Mahalanobis^2 gate on the 6-dof pose innovation (chi2 6 dof, p ~ 1e-4)
+  // Gated poses that agree with one another (each one's innovation within gate_chi2 of the
+  // previous one's) for this long mean the filter, not the VIO, is wrong: reset to the VIO.
+  double vio_reset_after = 0.3;          // [s] from the first to the newest pose of such a run
   double quaternion_norm_tolerance = 0.05;  // [-] | ||q|| - 1 | beyond this rejects a pose (as common/validate)
   double imu_max_gap = 0.1;              // [s] a larger step between IMU samples is rejected
   int imu_time_reset_count = 100;        // [samples] this many timing rejects in a row: restart on the new clock

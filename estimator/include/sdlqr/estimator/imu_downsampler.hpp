@@ -4,9 +4,13 @@
 // instantaneous readings, so between two samples the rates are interpolated linearly (trapezoid)
 // and an interval crossing a window edge is split at the edge; the windows therefore tile IMU time
 // exactly and every output lands on the grid whatever the IMU timestamps are.
+//
+// An accelerometer reading at or beyond the clip level (per axis) is counted in the window that
+// holds its timestamp (ImuDelta::accel_clipped): the integrated delta velocity is short there.
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 
 #include "sdlqr/common/messages.hpp"
 #include "sdlqr/estimator/nav_state.hpp"
@@ -21,7 +25,9 @@ struct ImuWindow {
 
 class ImuDownsampler {
  public:
-  explicit ImuDownsampler(int64_t period_us) : period_us_(period_us) {}
+  explicit ImuDownsampler(int64_t period_us,
+                          double accel_clip_level = std::numeric_limits<double>::infinity())  // [m/s^2]
+      : period_us_(period_us), accel_clip_level_(accel_clip_level) {}
 
   // Forget everything; the next sample starts the stream again.
   void reset() { started_ = false; }
@@ -40,6 +46,7 @@ class ImuDownsampler {
     while (true) {
       const int64_t to = std::min(sample.utime, window_end_);
       if (to > from) accumulate(sample, from, to);
+      if (to == sample.utime) countClipping(sample);  // before its window can close
       if (to == window_end_) on_window(closeWindow(sample.seq));
       if (to == sample.utime) break;
       from = to;
@@ -50,9 +57,11 @@ class ImuDownsampler {
  private:
   void start(const ImuSample& sample);
   void accumulate(const ImuSample& sample, int64_t from, int64_t to);
+  void countClipping(const ImuSample& sample);
   const ImuWindow& closeWindow(int64_t seq);
 
   int64_t period_us_;
+  double accel_clip_level_;
   bool started_ = false;
   ImuSample previous_;
   int64_t window_end_ = 0;

@@ -30,10 +30,14 @@ struct ImuDelta {
   double dt = 0.0;                       // [s]
   Vec3 delta_angle = Vec3::Zero();       // [rad] rotation vector, body frame at the interval start
   Vec3 delta_velocity = Vec3::Zero();    // [m/s] integrated specific force, body frame at the interval start
+  // Accelerometer samples in the interval that read at the clip level, per body axis: there the
+  // delta velocity misses an unknown part of the specific force (a touchdown's impulse).
+  Vec3 accel_clipped = Vec3::Zero();     // [samples]
 };
 
 // The first `fraction` of an interval and the rest, assuming constant rate and specific force over
-// it; the rest's delta velocity is expressed in the body frame at the split point.
+// it; the rest's delta velocity is expressed in the body frame at the split point. Clipped samples
+// are shared in proportion too (where in the interval they fell is not kept).
 struct ImuDeltaSplit {
   ImuDelta first;
   ImuDelta rest;

@@ -33,8 +33,8 @@ ImuSample idealImu(const TruthSample& truth, int64_t utime, int64_t seq, const V
   return s;
 }
 
-SensorSimulator::SensorSimulator(const AnalyticTrajectory& trajectory, const SensorSpec& spec)
-    : trajectory_(trajectory), spec_(spec), rng_(spec.seed) {}
+SensorSimulator::SensorSimulator(TruthFunction truth, const SensorSpec& spec)
+    : truth_(std::move(truth)), spec_(spec), rng_(spec.seed) {}
 
 size_t SensorSimulator::sampleIndex(int64_t utime) const {
   const double period_us = 1e6 / spec_.imu_rate;
@@ -74,8 +74,9 @@ std::vector<SensorEvent> SensorSimulator::run(double duration) {
     imu.kind = SensorEvent::Kind::kImu;
     imu.arrival_utime = utime;
     imu.imu = idealImu(truth, utime, i, gyro_bias, accel_bias);
-    imu.imu.gyro += gaussian(rng_, gyro_std);
-    imu.imu.accel += gaussian(rng_, accel_std);
+    imu.imu.gyro = (imu.imu.gyro + gaussian(rng_, gyro_std)).cwiseMax(-spec_.gyro_range).cwiseMin(spec_.gyro_range);
+    imu.imu.accel =
+        (imu.imu.accel + gaussian(rng_, accel_std)).cwiseMax(-spec_.accel_range).cwiseMin(spec_.accel_range);
     events.push_back(imu);
 
     // A camera frame whenever a VIO period has elapsed, on the IMU clock like the simulator's.
