@@ -144,11 +144,11 @@ TEST(Estimator, AgileFigureEightMeetsTargets) {
 }
 
 TEST(Estimator, CovarianceMatchesTheActualErrors) {
-  // GIVEN six agile flights with different noise and bias draws
+  // GIVEN forty agile flights with different noise and bias draws
   double nees_sum[5] = {0, 0, 0, 0, 0};
   double nees_total = 0.0;
   int samples = 0;
-  for (uint64_t seed = 21; seed <= 26; ++seed) {
+  for (uint64_t seed = 21; seed <= 60; ++seed) {
     SensorSpec spec;
     spec.seed = seed;
     SensorSimulator sensors{AnalyticTrajectory(TrajectorySpec()), spec};
@@ -182,17 +182,19 @@ TEST(Estimator, CovarianceMatchesTheActualErrors) {
     }
   }
 
-  // THEN the mean NEES is near the dimension (15 overall, 3 per block). Position, velocity and
-  // attitude errors decorrelate within a few VIO frames, so ~900 samples pin their mean to about
-  // +-0.1 and a band of +-1 is safe; bias errors stay correlated for seconds, leaving only a few
-  // dozen effective samples, so their band only catches a grossly wrong bias model.
-  const double band[5][2] = {{2.0, 4.0}, {2.0, 4.0}, {2.0, 4.0}, {1.0, 9.0}, {1.0, 9.0}};
+  // THEN the mean NEES is near the dimension (15 overall, 3 per block). Bias errors stay
+  // correlated over a whole flight, so each flight counts about once: the per-flight mean of the
+  // gyro-bias NEES scatters with a std of ~1.7 (measured over 240 flights), i.e. +-0.3 for the
+  // mean of 40 flights (six flights gave 4.5 by chance); over batches of 40 flights it ranged
+  // 2.7-3.4, the accelerometer bias's 2.7-3.2. Position, velocity and attitude decorrelate within
+  // a few VIO frames; their batch means stayed within 2.8-3.2.
+  const double band[5][2] = {{2.5, 3.5}, {2.5, 3.5}, {2.5, 3.5}, {2.0, 4.2}, {2.0, 4.2}};
   const char* names[5] = {"position", "velocity", "attitude", "gyro bias", "accel bias"};
   std::cout << "[ measured ] mean NEES over " << samples << " samples: all " << nees_total / samples;
   for (int block = 0; block < 5; ++block) std::cout << ", " << names[block] << " " << nees_sum[block] / samples;
   std::cout << "\n";
-  EXPECT_GT(nees_total / samples, 7.5);
-  EXPECT_LT(nees_total / samples, 22.5);
+  EXPECT_GT(nees_total / samples, 12.5);
+  EXPECT_LT(nees_total / samples, 17.5);
   for (int block = 0; block < 5; ++block) {
     EXPECT_GT(nees_sum[block] / samples, band[block][0]) << names[block];
     EXPECT_LT(nees_sum[block] / samples, band[block][1]) << names[block];
