@@ -61,6 +61,7 @@ class ClosedLoop {
   int64_t utime() const { return sim_.utime(); }
   const logger::FlightLog& log() const { return log_; }
   const sim::Simulator& simulator() const { return sim_; }
+  const estimator::Estimator& estimator() const { return estimator_; }
   const controller::StateDependentLqr& controller() const { return controller_; }
   const lowlevel::BodyrateLoop& lowlevel() const { return lowlevel_; }
 
