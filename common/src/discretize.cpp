@@ -253,7 +253,7 @@ DiscreteSystem<NX, NU> discretizeZoh(const Eigen::Matrix<double, NX, NX>& A, con
 
   DiscreteSystem<NX, NU> discrete;
   const FlushSubnormals flush;
-  const bool ok = std::isfinite(norm) && (cpuHasAvx2Fma() ? zohExponentialAvx2<NX, NU>(m_top, norm, result)
+  const bool ok = std::isfinite(norm) && (useAvx2Fma() ? zohExponentialAvx2<NX, NU>(m_top, norm, result)
                                                           : zohExponentialBaseline<NX, NU>(m_top, norm, result));
   if (!ok) {
     discrete.A.setConstant(std::numeric_limits<double>::quiet_NaN());

@@ -6,6 +6,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
+#include "sda_kernel.hpp"
 #include "small_kernels.hpp"
 
 namespace sdlqr {
@@ -41,12 +42,12 @@ DareSolution<N, M> solveDareDoubling(const Mat<N, N>& A, const Mat<N, M>& B, con
   const Mat<N, M> B_R_inverse = B.lazyProduct(R_inverse);
   const Mat<N, N> G0 = B_R_inverse.lazyProduct(B.transpose());
 
-  sda_detail::Block<N, N> Ak{}, Gk{}, Hk{};
+  double Ak[N * N], Gk[N * N], Hk[N * N];  // row-major
   for (int i = 0; i < N; ++i) {
     for (int j = 0; j < N; ++j) {
-      Ak(i, j) = A(i, j);
-      Gk(i, j) = 0.5 * (G0(i, j) + G0(j, i));
-      Hk(i, j) = 0.5 * (Q(i, j) + Q(j, i));
+      Ak[i * N + j] = A(i, j);
+      Gk[i * N + j] = 0.5 * (G0(i, j) + G0(j, i));
+      Hk[i * N + j] = 0.5 * (Q(i, j) + Q(j, i));
     }
   }
   const sda_detail::DoublingOutcome outcome = sda_detail::doublingLoop<N>(Ak, Gk, Hk, tolerance, max_doublings);
@@ -57,7 +58,7 @@ DareSolution<N, M> solveDareDoubling(const Mat<N, N>& A, const Mat<N, M>& B, con
     return solution;
   }
   for (int i = 0; i < N; ++i) {
-    for (int j = 0; j < N; ++j) solution.X(i, j) = Hk(i, j);
+    for (int j = 0; j < N; ++j) solution.X(i, j) = Hk[i * N + j];
   }
   solution.status = outcome.converged ? SolveStatus::kOk : SolveStatus::kNotConverged;
   return solution;

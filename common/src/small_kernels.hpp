@@ -9,12 +9,16 @@
 #include <cmath>
 #include <cstring>
 
+#include "sdlqr/common/kernel_isa.hpp"
+
 #if defined(__x86_64__) || defined(__i386__)
 #include <xmmintrin.h>
 #define SDLQR_SMALL_KERNELS_X86 1
 #define SDLQR_AVX2_TARGET __attribute__((target("avx2,fma")))
+#define SDLQR_AVX512_TARGET __attribute__((target("avx512f,avx512vl,avx512dq,avx2,fma")))
 #else
 #define SDLQR_AVX2_TARGET
+#define SDLQR_AVX512_TARGET
 #endif
 
 #define SDLQR_SDA_INLINE inline __attribute__((always_inline))
@@ -252,26 +256,19 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopBody(Block<N, N>& A, Block<N, N>& G
   return outcome;
 }
 
-// The same loop compiled twice: for AVX2 + FMA (4-wide vectors and fused multiply-adds, about 1.7x
-// faster here) and for the baseline x86-64 instruction set, chosen once at run time. Only plain
-// double arrays cross these functions, so no Eigen type is compiled with two vector settings.
-template <int N>
-SDLQR_AVX2_TARGET DoublingOutcome doublingLoopAvx2(Block<N, N>& A, Block<N, N>& G, Block<N, N>& H,
-                                                                     double tolerance, int max_doublings) {
-  return doublingLoopBody<N>(A, G, H, tolerance, max_doublings);
-}
-
+// The loop for the x86-64 baseline instruction set (sda_kernel.hpp has the vector versions).
+// Only plain double arrays cross these functions, so no Eigen type is compiled with two vector
+// settings.
 template <int N>
 DoublingOutcome doublingLoopBaseline(Block<N, N>& A, Block<N, N>& G, Block<N, N>& H, double tolerance,
                                      int max_doublings) {
   return doublingLoopBody<N>(A, G, H, tolerance, max_doublings);
 }
 
+// True when the AVX2 + FMA builds of the kernels may run (kernel_isa.hpp).
+inline bool useAvx2Fma() { return activeKernelIsa() != KernelIsa::kBaseline; }
+
 #if defined(SDLQR_SMALL_KERNELS_X86)
-inline bool cpuHasAvx2Fma() {
-  static const bool available = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return available;
-}
 
 // A_k of the doubling falls like rho^(2^k), so the fast modes of a solve underflow into
 // subnormal numbers in the late doublings, and x86 cores may take a microcode assist for each
@@ -288,21 +285,13 @@ class FlushSubnormals {
   unsigned saved_;
 };
 #else
-inline bool cpuHasAvx2Fma() { return false; }
 class FlushSubnormals {};
 #endif
 
 template <int N>
 LyapunovOutcome lyapunovCheck(const Block<N, N>& A, const Block<N, N>& A_cl, const Block<N, N>& X,
                               const Block<N, N>& Q) {
-  return cpuHasAvx2Fma() ? lyapunovAvx2<N>(A, A_cl, X, Q) : lyapunovBaseline<N>(A, A_cl, X, Q);
-}
-
-template <int N>
-DoublingOutcome doublingLoop(Block<N, N>& A, Block<N, N>& G, Block<N, N>& H, double tolerance, int max_doublings) {
-  const FlushSubnormals flush;
-  return cpuHasAvx2Fma() ? doublingLoopAvx2<N>(A, G, H, tolerance, max_doublings)
-                         : doublingLoopBaseline<N>(A, G, H, tolerance, max_doublings);
+  return useAvx2Fma() ? lyapunovAvx2<N>(A, A_cl, X, Q) : lyapunovBaseline<N>(A, A_cl, X, Q);
 }
 
 }  // namespace sdlqr::sda_detail

@@ -7,12 +7,14 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
 
 #include "sdlqr/common/discretize.hpp"
+#include "sdlqr/common/kernel_isa.hpp"
 #include "sdlqr/common/lqr.hpp"
 #include "sdlqr/common/quaternion.hpp"
 #include "sdlqr/common/riccati.hpp"
@@ -447,6 +449,99 @@ TEST(StabilityProof, AcceptsStableAndRejectsUnstableMatrices) {
   EXPECT_FALSE(provenSchurStable<2>(marginal, Eigen::Matrix2d::Identity()));
   Eigen::Matrix2d nan_matrix = Eigen::Matrix2d::Constant(kNan);
   EXPECT_FALSE(provenSchurStable<2>(nan_matrix, Eigen::Matrix2d::Identity()));
+}
+
+// --- every instruction set of the kernels (kernel_isa.hpp) ---
+
+constexpr KernelIsa kAllIsas[] = {KernelIsa::kBaseline, KernelIsa::kAvx2Fma, KernelIsa::kAvx512};
+
+// Restores the best instruction set when a test ends, also when an assertion returns early.
+struct RestoreBestIsa {
+  ~RestoreBestIsa() { setKernelIsa(bestKernelIsa()); }
+};
+
+TEST(KernelIsa, LoweringIsClampedToWhatTheCpuSupports) {
+  const RestoreBestIsa restore;
+  const KernelIsa best = bestKernelIsa();
+  std::cout << "best kernel instruction set here: " << toString(best) << "\n";
+  EXPECT_EQ(activeKernelIsa(), best);
+  EXPECT_EQ(setKernelIsa(KernelIsa::kBaseline), KernelIsa::kBaseline);
+  EXPECT_EQ(activeKernelIsa(), KernelIsa::kBaseline);
+  EXPECT_EQ(setKernelIsa(KernelIsa::kAvx512), best);
+  EXPECT_EQ(activeKernelIsa(), best);
+}
+
+TEST(KernelIsa, EveryInstructionSetMatchesScipyAndTheBestOne) {
+  const RestoreBestIsa restore;
+  const KernelIsa best = bestKernelIsa();
+  std::vector<LqrResult> reference;
+  for (const FixtureCase& c : fixture().cases) reference.push_back(solveLqr(c.x, c.u, paramsFor(c)));
+  int covered = 0;
+  for (const KernelIsa isa : kAllIsas) {
+    if (static_cast<int>(isa) > static_cast<int>(best)) {
+      std::cout << toString(isa) << ": not supported by this CPU, not tested\n";
+      continue;
+    }
+    ASSERT_EQ(setKernelIsa(isa), isa);
+    double worst_scipy = 0.0, worst_best = 0.0, worst_residual = 0.0;
+    for (size_t i = 0; i < fixture().cases.size(); ++i) {
+      const FixtureCase& c = fixture().cases[i];
+      SCOPED_TRACE(std::string(toString(isa)) + " " + c.name);
+      const LqrResult result = solveLqr(c.x, c.u, paramsFor(c));
+      ASSERT_EQ(result.status, SolveStatus::kOk) << result.reason;
+      ASSERT_EQ(reference[i].status, SolveStatus::kOk);
+      const double error_scipy = relativeDifference(result.K, c.K);
+      const double error_best = relativeDifference(result.K, reference[i].K);
+      EXPECT_LT(error_scipy, 1e-9);
+      EXPECT_LT(error_best, 1e-12);
+      EXPECT_LT(result.residual, 1e-9);
+      EXPECT_LE(std::abs(result.iterations - reference[i].iterations), 1);
+      worst_scipy = std::max(worst_scipy, error_scipy);
+      worst_best = std::max(worst_best, error_best);
+      worst_residual = std::max(worst_residual, result.residual);
+    }
+    std::cout << toString(isa) << ": worst |dK|/|K| vs SciPy " << worst_scipy << ", vs " << toString(best) << " "
+              << worst_best << ", worst residual " << worst_residual << "\n";
+    ++covered;
+  }
+  EXPECT_GE(covered, 1);
+}
+
+TEST(KernelIsa, SmallAndTenStateDoublingAgreeOnEveryInstructionSet) {
+  // N = 1, 2 and 10 have other vector layouts than the 9-state problem (one partial vector, two
+  // vectors per row, [W | A | G] filling its padded row exactly).
+  const RestoreBestIsa restore;
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  Eigen::Matrix<double, 10, 10> A;
+  Eigen::Matrix<double, 10, 4> B;
+  for (int i = 0; i < 10; ++i) {
+    for (int j = 0; j < 10; ++j) A(i, j) = normal(rng) / std::sqrt(10.0) * 1.1;  // unstable modes
+    for (int j = 0; j < 4; ++j) B(i, j) = normal(rng);
+  }
+  const Eigen::Matrix<double, 10, 10> Q = Eigen::Matrix<double, 10, 10>::Identity();
+  const Eigen::Matrix4d R = Eigen::Vector4d(1.0, 2.0, 0.5, 3.0).asDiagonal();
+  const Eigen::Matrix2d A2 = (Eigen::Matrix2d() << 1.0, 0.1, 0.0, 1.0).finished();
+  const Eigen::Vector2d B2(0.005, 0.1);
+  const Eigen::Matrix<double, 1, 1> one(1.0), a1(1.01), b1(0.01), q1(100.0), r1(0.1);
+  for (const KernelIsa isa : kAllIsas) {
+    if (static_cast<int>(isa) > static_cast<int>(bestKernelIsa())) continue;
+    SCOPED_TRACE(toString(isa));
+    ASSERT_EQ(setKernelIsa(isa), isa);
+    const DareSolution<10, 4> ten = solveDareDoubling<10, 4>(A, B, Q, R, 1e-14, 64);
+    ASSERT_EQ(ten.status, SolveStatus::kOk);
+    const double residual = dareRelativeResidual<10, 4>(A, B, Q, R, ten.X);
+    EXPECT_LT(residual, 1e-12);
+    const DareSolution<2, 1> two = solveDareDoubling<2, 1>(A2, B2, Eigen::Matrix2d::Identity(), one, 1e-14, 64);
+    ASSERT_EQ(two.status, SolveStatus::kOk);
+    EXPECT_LT((dareRelativeResidual<2, 1>(A2, B2, Eigen::Matrix2d::Identity(), one, two.X)), 1e-13);
+    const DareSolution<1, 1> scalar = solveDareDoubling<1, 1>(a1, b1, q1, r1, 1e-14, 64);
+    ASSERT_EQ(scalar.status, SolveStatus::kOk);
+    const double expected = scalarDare(1.01, 0.01, 100.0, 0.1);
+    EXPECT_NEAR(scalar.X(0, 0), expected, 1e-12 * expected);
+    std::cout << toString(isa) << ": 10-state residual " << residual << " after " << ten.doublings
+              << " doublings, 2-state " << two.doublings << ", scalar " << scalar.doublings << "\n";
+  }
 }
 
 }  // namespace
