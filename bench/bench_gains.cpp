@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <thread>
 #include <vector>
 
 #include "gains_states.hpp"
@@ -87,6 +88,48 @@ void BM_SolveLqrTangentLatency(benchmark::State& state) {
   state.counters["max_us"] = samples.back();
 }
 BENCHMARK(BM_SolveLqrTangentLatency)->Unit(benchmark::kMicrosecond)->MinTime(2.0);
+
+// The duty cycle of sdlqr-gains, which solves once per 100 ms instead of back to back: before every
+// timed solve the thread sleeps range(0) ms and, when range(1) is 1, writes one byte per cache
+// line of a 64 MiB buffer (larger than L3), as the other processes of the stack do meanwhile.
+// Reports the distribution of the solve alone (the sleep and the eviction are not timed).
+void BM_SolveLqrTangentDutyCycle(benchmark::State& state) {
+  const LqrParams params;
+  const auto sleep = std::chrono::milliseconds(state.range(0));
+  const bool evict = state.range(1) != 0;
+  static std::vector<unsigned char> buffer(64u << 20);
+  std::vector<double> samples;
+  samples.reserve(static_cast<size_t>(state.max_iterations));
+  size_t i = 0;
+  for (auto _ : state) {
+    const GainsCase& c = cases()[i++ % cases().size()];
+    if (sleep.count() > 0) std::this_thread::sleep_for(sleep);
+    if (evict) {
+      for (size_t j = 0; j < buffer.size(); j += 64) buffer[j] = static_cast<unsigned char>(buffer[j] + 1);
+      benchmark::ClobberMemory();
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const LqrResult result = solveLqr(c.x, c.u, params);
+    const auto stop = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(result.K.data());
+    const double seconds = std::chrono::duration<double>(stop - start).count();
+    state.SetIterationTime(seconds);
+    samples.push_back(seconds * 1e6);
+  }
+  std::sort(samples.begin(), samples.end());
+  const auto quantile = [&](double q) { return samples[static_cast<size_t>(q * (samples.size() - 1))]; };
+  state.counters["median_us"] = quantile(0.5);
+  state.counters["p99_us"] = quantile(0.99);
+  state.counters["max_us"] = samples.back();
+}
+BENCHMARK(BM_SolveLqrTangentDutyCycle)
+    ->ArgNames({"sleep_ms", "evict"})
+    ->Args({100, 0})
+    ->Args({0, 1})
+    ->Args({100, 1})
+    ->Iterations(200)
+    ->UseManualTime()
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_Linearize(benchmark::State& state) {
   size_t i = 0;

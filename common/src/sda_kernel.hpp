@@ -1,12 +1,12 @@
 #pragma once
-// Internal to common/src (riccati.cpp): the structure-preserving doubling loop on 8-wide vectors.
-//
-// Every row is a whole number of 8-double vectors (GCC vector extensions): one zmm register with
-// AVX-512, two ymm with AVX2, four xmm on the x86-64 baseline; the same source is compiled once
-// per instruction set and chosen at run time (kernel_isa.hpp). Per doubling (see riccati.hpp):
+// Internal to common/src (riccati.cpp): the structure-preserving doubling loop on L-lane vectors
+// (GCC vector extensions): L = 8, one zmm register, with AVX-512; L = 4, one ymm, with AVX2. The
+// same source is compiled once per instruction set and chosen at run time (kernel_isa.hpp); the
+// x86-64 baseline keeps the loop of small_kernels.hpp. Every row is a whole number of vectors.
+// Per doubling (see riccati.hpp):
 //
 //   [W | A | G] with W = I + G H, the three N-column blocks packed side by side (27 of 32 columns
-//   for N = 9, four vectors a row) -> one Gauss-Jordan elimination -> [I | Y | S_G],
+//   for N = 9, four zmm vectors a row) -> one Gauss-Jordan elimination -> [I | Y | S_G],
 //   Y = W^-1 A, S_G = W^-1 G (symmetric);
 //   D_H = A^T (H Y)              H <- H + D_H, D_H also the change for the stopping test;
 //   [A' | T] = A [Y | S_G]       one product for both (their columns are adjacent);
@@ -26,9 +26,6 @@
 #include "small_kernels.hpp"
 
 namespace sdlqr::sda_detail {
-
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wpsabi"  // the vector types never cross a non-inlined call
 
 // L doubles in one vector: 8 = one zmm register (AVX-512), 4 = one ymm (AVX2), 2 = one xmm.
 template <int L>
@@ -305,8 +302,6 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopVectorBody(const double* A_in, cons
   }
   return outcome;
 }
-
-#pragma GCC diagnostic pop
 
 // The vector loop compiled per instruction set (measured on the 9-state problems, Zen 5, us per
 // loop: AVX-512 3.8, AVX2 5.3; the previous 4-wide loop 7.3). Accumulator budgets: 24 of the
