@@ -13,7 +13,7 @@
 //   D_G = T A^T = A S_G A^T      G <- G + D_G.
 //
 // D_H and D_G are symmetric: only the vectors that hold their lower triangle are computed and the
-// upper triangle is copied from it, so H and G stay exactly symmetric. The last doubling stops
+// missing upper entries are copied from it; the returned H is symmetrized. The last doubling stops
 // after the H update: A' and G' are not needed once the stopping test passes.
 //
 // Padding columns: H, G and D keep zero padding (updates are masked to the real lanes); the
@@ -117,11 +117,51 @@ SDLQR_SDA_INLINE void lowerProduct(const double* __restrict a, const double* __r
   }
 }
 
-// Copies the lower triangle of the N x N block m (stride S) onto its upper triangle.
-template <int N, int S>
-SDLQR_SDA_INLINE void mirrorLower(double* m) {
+// Completes a symmetric N x N block m (stride S) whose rows were computed by lowerProduct: the
+// entries right of a row's last computed vector are copied from their mirror images. The upper
+// entries that lowerProduct did compute stay as computed (equal to their mirror images up to
+// rounding); the solution is symmetrized once at the end instead of in every doubling.
+template <int L, int N, int S>
+SDLQR_SDA_INLINE void completeUpper(double* m) {
   for (int i = 0; i < N; ++i) {
-    for (int j = i + 1; j < N; ++j) m[i * S + j] = m[j * S + i];
+    for (int j = (i / L + 1) * L; j < N; ++j) m[i * S + j] = m[j * S + i];
+  }
+}
+
+// out = a^T for an N x N block a (stride SA) into out (stride SO): whole L x L blocks by vector
+// shuffles (at each level h, the lanes with bit h set in row r swap with the lanes with bit h
+// clear in row r + h), the remaining edge entries one by one.
+template <int L, int N, int SA, int SO>
+SDLQR_SDA_INLINE void transpose(const double* __restrict a, double* __restrict out) {
+  using Vec = typename Lanes<L>::Vec;
+  using Mask = typename Lanes<L>::Mask;
+  constexpr int B = N / L * L;  // rows and columns covered by whole blocks
+  for (int i0 = 0; i0 < B; i0 += L) {
+    for (int j0 = 0; j0 < B; j0 += L) {
+      Vec rows[L];
+#pragma GCC unroll 8
+      for (int r = 0; r < L; ++r) rows[r] = at<L>(a + (i0 + r) * SA + j0);
+#pragma GCC unroll 4
+      for (int h = 1; h < L; h *= 2) {
+        Mask low = {}, high = {};
+        for (int j = 0; j < L; ++j) {
+          low[j] = (j & h) ? L + j - h : j;     // row r keeps its lanes without bit h
+          high[j] = (j & h) ? L + j : j + h;  // row r + h keeps its lanes with bit h
+        }
+#pragma GCC unroll 8
+        for (int r = 0; r < L; ++r) {
+          if (r & h) continue;
+          const Vec upper = rows[r], lower = rows[r + h];
+          rows[r] = __builtin_shuffle(upper, lower, low);
+          rows[r + h] = __builtin_shuffle(upper, lower, high);
+        }
+      }
+#pragma GCC unroll 8
+      for (int r = 0; r < L; ++r) at<L>(out + (j0 + r) * SO + i0) = rows[r];
+    }
+  }
+  for (int i = 0; i < N; ++i) {
+    for (int j = i < B ? B : 0; j < N; ++j) out[j * SO + i] = a[i * SA + j];
   }
 }
 
@@ -235,9 +275,7 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopVectorBody(const double* A_in, cons
       std::memcpy(w.gj + i * SW + 2 * N, w.G + i * S, sizeof(double) * N);
     }
     // A^T for the G update; independent of the elimination, so it fills the elimination's stalls.
-    for (int i = 0; i < N; ++i) {
-      for (int j = 0; j < N; ++j) w.At[j * S + i] = A[i * SW + j];
-    }
+    transpose<L, N, SW, S>(A, w.At);
     if (!gaussJordanFrom<L, N, SW, 0>(w.gj)) {
       outcome.finite = false;
       return outcome;
@@ -247,7 +285,7 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopVectorBody(const double* A_in, cons
     // H += D_H, D_H = A^T (H Y).
     product<L, kAccumulators, N, 0, N, NS, false, false, S, SW, S>(w.H, Y, w.Z);
     lowerProduct<L, kAccumulators, N, 0, true, SW, S, S>(A, w.Z, w.D);
-    mirrorLower<N, S>(w.D);
+    completeUpper<L, N, S>(w.D);
     Vec change_squared{}, norm_squared{};
     for (int i = 0; i < N; ++i) {
 #pragma GCC unroll 16
@@ -285,7 +323,7 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopVectorBody(const double* A_in, cons
     product<L, kAccumulators, N, 0, N, NR, false, false, SW, SW, SW>(A, w.gj + c0, A_next + c0);
     // G += D_G, D_G = T A^T.
     lowerProduct<L, kAccumulators, N, 0, false, SW, S, S>(A_next + 2 * N, w.At, w.D);
-    mirrorLower<N, S>(w.D);
+    completeUpper<L, N, S>(w.D);
     for (int i = 0; i < N; ++i) {
 #pragma GCC unroll 16
       for (int v = 0; v < NS; ++v) {
@@ -298,7 +336,7 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopVectorBody(const double* A_in, cons
     A_next = swap;
   }
   for (int i = 0; i < N; ++i) {
-    for (int j = 0; j < N; ++j) H_inout[i * N + j] = w.H[i * S + j];
+    for (int j = 0; j < N; ++j) H_inout[i * N + j] = 0.5 * (w.H[i * S + j] + w.H[j * S + i]);
   }
   return outcome;
 }
