@@ -170,12 +170,6 @@ SDLQR_SDA_INLINE LyapunovOutcome lyapunovBody(const Block<N, N>& A, const Block<
 }
 
 template <int N>
-SDLQR_AVX2_TARGET LyapunovOutcome lyapunovAvx2(const Block<N, N>& A, const Block<N, N>& A_cl,
-                                                                  const Block<N, N>& X, const Block<N, N>& Q) {
-  return lyapunovBody<N>(A, A_cl, X, Q);
-}
-
-template <int N>
 LyapunovOutcome lyapunovBaseline(const Block<N, N>& A, const Block<N, N>& A_cl, const Block<N, N>& X,
                                  const Block<N, N>& Q) {
   return lyapunovBody<N>(A, A_cl, X, Q);
@@ -287,11 +281,5 @@ class FlushSubnormals {
 #else
 class FlushSubnormals {};
 #endif
-
-template <int N>
-LyapunovOutcome lyapunovCheck(const Block<N, N>& A, const Block<N, N>& A_cl, const Block<N, N>& X,
-                              const Block<N, N>& Q) {
-  return useAvx2Fma() ? lyapunovAvx2<N>(A, A_cl, X, Q) : lyapunovBaseline<N>(A, A_cl, X, Q);
-}
 
 }  // namespace sdlqr::sda_detail

@@ -544,5 +544,65 @@ TEST(KernelIsa, SmallAndTenStateDoublingAgreeOnEveryInstructionSet) {
   }
 }
 
+TEST(KernelIsa, LyapunovCertificateDecidesAlikeOnEveryInstructionSet) {
+  const RestoreBestIsa restore;
+  // B = 0 makes K = 0 and A_cl = A: the certificate then judges A against the given X.
+  Eigen::Matrix2d non_normal;
+  non_normal << 0.99, 50.0, 0.0, 0.98;  // rho < 1, ||A|| >> 1
+  const Eigen::Vector2d no_input = Eigen::Vector2d::Zero();
+  const Eigen::Matrix<double, 1, 1> one(1.0);
+  const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
+  // The Stein solution X - A^T X A = I: a valid Lyapunov matrix for A.
+  Eigen::Matrix4d stein = Eigen::Matrix4d::Identity();
+  for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+      for (int k = 0; k < 2; ++k) {
+        for (int l = 0; l < 2; ++l) stein(2 * j + i, 2 * l + k) -= non_normal(k, i) * non_normal(l, j);
+      }
+    }
+  }
+  const Eigen::Vector4d x_vec = stein.fullPivLu().solve(Eigen::Vector4d(1.0, 0.0, 0.0, 1.0));
+  Eigen::Matrix2d lyapunov_matrix;
+  lyapunov_matrix << x_vec[0], x_vec[2], x_vec[1], x_vec[3];
+  Eigen::Matrix2d indefinite;
+  indefinite << 1.0, 0.0, 0.0, -1.0;
+  for (const KernelIsa isa : kAllIsas) {
+    if (static_cast<int>(isa) > static_cast<int>(bestKernelIsa())) continue;
+    SCOPED_TRACE(toString(isa));
+    ASSERT_EQ(setKernelIsa(isa), isa);
+    const CertifiedGain<2, 1> with_stein =
+        certifiedRiccatiGain<2, 1>(non_normal, no_input, identity, one, lyapunov_matrix);
+    EXPECT_TRUE(with_stein.lyapunov);
+    EXPECT_TRUE(with_stein.stable);
+    const CertifiedGain<2, 1> with_identity = certifiedRiccatiGain<2, 1>(non_normal, no_input, identity, one, identity);
+    EXPECT_FALSE(with_identity.lyapunov);  // I - A^T A is indefinite
+    EXPECT_TRUE(with_identity.stable);     // proven by powers instead
+    const CertifiedGain<2, 1> with_indefinite =
+        certifiedRiccatiGain<2, 1>(non_normal, no_input, identity, one, indefinite);
+    EXPECT_FALSE(with_indefinite.lyapunov);
+    Eigen::Matrix2d unstable = non_normal;
+    unstable(1, 1) = 1.02;
+    EXPECT_FALSE((certifiedRiccatiGain<2, 1>(unstable, no_input, identity, one, lyapunov_matrix).stable));
+    // Every fixture DARE solution certifies its own closed loop by the Lyapunov test.
+    int certified = 0;
+    for (const FixtureCase& c : fixture().cases) {
+      State x = c.x;
+      orientation(x).normalize();
+      const TangentBasis E = tangentBasis(orientation(x));
+      const TangentSystem system = projectToTangent(linearize(x, c.u), E, fixture().q_diag);
+      const DiscreteSystem<9, 4> d = discretizeZoh<9, 4>(system.A, system.B, c.dt);
+      const InputWeight R = fixture().r_diag.asDiagonal();
+      const DareSolution<9, 4> dare = solveDareDoubling<9, 4>(d.A, d.B, system.Q, R, 1e-12, 64);
+      ASSERT_EQ(dare.status, SolveStatus::kOk);
+      const CertifiedGain<9, 4> gain = certifiedRiccatiGain<9, 4>(d.A, d.B, system.Q, R, dare.X);
+      certified += gain.lyapunov && gain.stable;
+      // A wrong Riccati matrix (half the solution) leaves a residual of the order of Q.
+      const CertifiedGain<9, 4> wrong = certifiedRiccatiGain<9, 4>(d.A, d.B, system.Q, R, 0.5 * dare.X);
+      EXPECT_GT(wrong.relative_residual, 1e-3) << c.name;
+    }
+    EXPECT_EQ(certified, static_cast<int>(fixture().cases.size()));
+  }
+}
+
 }  // namespace
 }  // namespace sdlqr

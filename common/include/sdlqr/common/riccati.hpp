@@ -73,6 +73,7 @@ struct CertifiedGain {
   double relative_residual = 0.0;  // as dareRelativeResidual
   bool finite = false;             // K and the residual are finite
   bool stable = false;             // as provenSchurStable(A + B K, X)
+  bool lyapunov = false;           // stable proven by the Lyapunov test (not by powers of A + B K)
 };
 
 // riccatiGain, dareRelativeResidual and provenSchurStable(A + B K, X) in one pass that shares
