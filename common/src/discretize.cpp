@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 
 #include "small_kernels.hpp"
+#include "vector_kernels.hpp"
 
 namespace sdlqr {
 
@@ -104,16 +105,27 @@ using namespace sda_detail;
 // triangular with [[D, -U_Gamma], [0, b0 I]] as denominator (D = V_F - U_F): its top rows are
 // D^-1 [V_F + U_F | 2 U_Gamma] and its bottom rows [0 | I]. Squaring keeps the form:
 // [E | Phi] -> E [E | Phi] + [0 | Phi].
-template <int NX, int NU>
+//
+// kVector: the products and the elimination of vector_kernels.hpp / sda_kernel.hpp on L-lane
+// vectors, the elimination on [D | rhs] packed into whole vectors; else the auto-vectorized loops
+// of small_kernels.hpp (baseline build, L = 4 layout).
+template <int NX, int NU, int L, bool kVector>
 struct ZohKernel {
   static constexpr int NP = NX + NU;
-  static constexpr int SP = padded(NP);
-  static constexpr int SG = padded(NX) + SP;  // [D | rhs] for the Gauss-Jordan solve
+  static constexpr int SP = roundUp(NP, L);
+  // [D | rhs] for the Gauss-Jordan solve: packed (rhs from column NX) or each block padded.
+  static constexpr int RHS = kVector ? NX : padded(NX);
+  static constexpr int SG = kVector ? roundUp(NX + NP, L) : padded(NX) + SP;
+  static constexpr int kAccumulators = L == 8 ? 24 : 9;
   using Top = Block<NX, NP, SP>;
 
   // out = first NX columns of `left` (an F power) times `right`.
   static SDLQR_SDA_INLINE void product(const Top& left, const Top& right, Top& out) {
-    multiply<NX, SP, false, false, SP, SP, SP>(left.v, right.v, out.v);
+    if constexpr (kVector) {
+      sda_detail::product<L, kAccumulators, NX, 0, NX, SP / L, false, false, SP, SP, SP>(left.v, right.v, out.v);
+    } else {
+      multiply<NX, SP, false, false, SP, SP, SP>(left.v, right.v, out.v);
+    }
   }
   static SDLQR_SDA_INLINE void axpy(double a, const Top& x, Top& y) {
     for (int i = 0; i < NX * SP; ++i) y.v[i] += a * x.v[i];
@@ -188,17 +200,22 @@ struct ZohKernel {
     }
 
     // [D | V_F + U_F | 2 U_Gamma] with D = V_F - U_F, then Gauss-Jordan.
-    constexpr int S = padded(NX);
     Block<NX, SG, SG> system;
     for (int i = 0; i < NX; ++i) {
-      for (int j = 0; j < S; ++j) system(i, j) = j < NX ? V(i, j) - U(i, j) : 0.0;
-      for (int j = 0; j < SP; ++j) {
-        system(i, S + j) = j < NX ? V(i, j) + U(i, j) : j < NP ? 2.0 * U(i, j) : 0.0;
+      for (int j = 0; j < RHS; ++j) system(i, j) = j < NX ? V(i, j) - U(i, j) : 0.0;
+      for (int j = 0; j < SG - RHS; ++j) {
+        system(i, RHS + j) = j < NX ? V(i, j) + U(i, j) : j < NP ? 2.0 * U(i, j) : 0.0;
       }
     }
-    if (!gaussJordan<NX, S, SG>(system.v)) return false;
+    bool solved;
+    if constexpr (kVector) {
+      solved = gaussJordanFrom<L, NX, SG, 0>(system.v);
+    } else {
+      solved = gaussJordan<NX, RHS, SG>(system.v);
+    }
+    if (!solved) return false;
     for (int i = 0; i < NX; ++i) {
-      for (int j = 0; j < SP; ++j) result(i, j) = system(i, S + j);
+      for (int j = 0; j < SP; ++j) result(i, j) = j < NP ? system(i, RHS + j) : 0.0;
     }
     for (int k = 0; k < squarings; ++k) {
       Top squared;
@@ -219,16 +236,51 @@ struct ZohKernel {
   }
 };
 
+// One build per instruction set (kernel_isa.hpp); all take and give the top rows in the L = 8
+// layout (a multiple of the L = 4 one), so the kernels of other widths copy in and out.
 template <int NX, int NU>
-SDLQR_AVX2_TARGET bool zohExponentialAvx2(const Block<NX, NX + NU, padded(NX + NU)>& m_top,
-                                                              double norm, Block<NX, NX + NU, padded(NX + NU)>& out) {
-  return ZohKernel<NX, NU>::run(m_top, norm, out);
+using ZohTop = Block<NX, NX + NU, roundUp(NX + NU, 8)>;
+
+template <int NX, int NU, int L, bool kVector>
+SDLQR_SDA_INLINE bool zohExponentialIn(const ZohTop<NX, NU>& m_top, double norm, ZohTop<NX, NU>& out) {
+  using Kernel = ZohKernel<NX, NU, L, kVector>;
+  if constexpr (Kernel::SP == roundUp(NX + NU, 8)) {
+    return Kernel::run(m_top, norm, out);
+  } else {
+    typename Kernel::Top in, result;
+    for (int i = 0; i < NX; ++i) {
+      for (int j = 0; j < Kernel::SP; ++j) in(i, j) = m_top(i, j);
+    }
+    if (!Kernel::run(in, norm, result)) return false;
+    for (int i = 0; i < NX; ++i) {
+      for (int j = 0; j < roundUp(NX + NU, 8); ++j) out(i, j) = j < Kernel::SP ? result(i, j) : 0.0;
+    }
+    return true;
+  }
 }
 
 template <int NX, int NU>
-bool zohExponentialBaseline(const Block<NX, NX + NU, padded(NX + NU)>& m_top, double norm,
-                            Block<NX, NX + NU, padded(NX + NU)>& out) {
-  return ZohKernel<NX, NU>::run(m_top, norm, out);
+SDLQR_AVX512_TARGET bool zohExponentialAvx512(const ZohTop<NX, NU>& m_top, double norm, ZohTop<NX, NU>& out) {
+  return zohExponentialIn<NX, NU, 8, true>(m_top, norm, out);
+}
+
+template <int NX, int NU>
+SDLQR_AVX2_TARGET bool zohExponentialAvx2(const ZohTop<NX, NU>& m_top, double norm, ZohTop<NX, NU>& out) {
+  return zohExponentialIn<NX, NU, 4, true>(m_top, norm, out);
+}
+
+template <int NX, int NU>
+bool zohExponentialBaseline(const ZohTop<NX, NU>& m_top, double norm, ZohTop<NX, NU>& out) {
+  return zohExponentialIn<NX, NU, 4, false>(m_top, norm, out);
+}
+
+template <int NX, int NU>
+bool zohExponential(const ZohTop<NX, NU>& m_top, double norm, ZohTop<NX, NU>& out) {
+  switch (activeKernelIsa()) {
+    case KernelIsa::kAvx512: return zohExponentialAvx512<NX, NU>(m_top, norm, out);
+    case KernelIsa::kAvx2Fma: return zohExponentialAvx2<NX, NU>(m_top, norm, out);
+    default: return zohExponentialBaseline<NX, NU>(m_top, norm, out);
+  }
 }
 
 }  // namespace
@@ -236,12 +288,12 @@ bool zohExponentialBaseline(const Block<NX, NX + NU, padded(NX + NU)>& m_top, do
 template <int NX, int NU>
 DiscreteSystem<NX, NU> discretizeZoh(const Eigen::Matrix<double, NX, NX>& A, const Eigen::Matrix<double, NX, NU>& B,
                                      double dt) {
-  using Top = typename ZohKernel<NX, NU>::Top;
+  using Top = ZohTop<NX, NU>;
   constexpr int NP = NX + NU;
   Top m_top, result;
   double column_sums[NP] = {};
   for (int i = 0; i < NX; ++i) {
-    for (int j = 0; j < ZohKernel<NX, NU>::SP; ++j) {
+    for (int j = 0; j < sda_detail::roundUp(NP, 8); ++j) {
       const double value = j < NX ? A(i, j) * dt : j < NP ? B(i, j - NX) * dt : 0.0;
       m_top(i, j) = value;
       if (j < NP) column_sums[j] += std::fabs(value);
@@ -253,8 +305,7 @@ DiscreteSystem<NX, NU> discretizeZoh(const Eigen::Matrix<double, NX, NX>& A, con
 
   DiscreteSystem<NX, NU> discrete;
   const FlushSubnormals flush;
-  const bool ok = std::isfinite(norm) && (useAvx2Fma() ? zohExponentialAvx2<NX, NU>(m_top, norm, result)
-                                                          : zohExponentialBaseline<NX, NU>(m_top, norm, result));
+  const bool ok = std::isfinite(norm) && zohExponential<NX, NU>(m_top, norm, result);
   if (!ok) {
     discrete.A.setConstant(std::numeric_limits<double>::quiet_NaN());
     discrete.B.setConstant(std::numeric_limits<double>::quiet_NaN());

@@ -28,59 +28,6 @@
 
 namespace sdlqr::sda_detail {
 
-// One pivot step P of an in-place Gauss-Jordan elimination with partial pivoting of [W | rhs]
-// (N rows, stride SW, a multiple of L; W in columns 0..N-1), then the steps after it: afterwards
-// the columns right of W hold W^-1 rhs. False when a pivot is zero or non-finite. Every step is
-// its own instantiation, so all loop bounds are constants and the rows are updated without
-// branches; the pivot row is exchanged unconditionally (with itself when no exchange is due).
-template <int L, int N, int SW, int P>
-SDLQR_SDA_INLINE bool gaussJordanFrom(double* m) {
-  if constexpr (P == N) {
-    return true;
-  } else {
-    using Vec = typename Lanes<L>::Vec;
-    constexpr int NV = SW / L;
-    constexpr int first = P / L;  // vectors left of it hold finished unit columns only
-    // Partial pivoting: the first row from P with the largest |m(i, P)|. The compare-and-branch
-    // search is deliberate: its branches are well predicted in the repetitive doubling, and a
-    // predicted pivot lets the division start before the search has finished (a branch-free
-    // tournament measured 15 % slower in the whole loop).
-    int pivot_row = P;
-    double pivot_value = m[P * SW + P];
-    double pivot_abs = std::fabs(pivot_value);
-#pragma GCC unroll 16
-    for (int i = P + 1; i < N; ++i) {
-      const double candidate = m[i * SW + P];
-      const bool larger = std::fabs(candidate) > pivot_abs;
-      pivot_abs = larger ? std::fabs(candidate) : pivot_abs;
-      pivot_value = larger ? candidate : pivot_value;
-      pivot_row = larger ? i : pivot_row;
-    }
-    if (!(pivot_abs > 0.0) || !std::isfinite(pivot_abs)) return false;
-    double* __restrict pivot = m + P * SW;
-    double* other = m + pivot_row * SW;
-    const double inverse = 1.0 / pivot_value;
-    Vec scaled[NV] = {};
-#pragma GCC unroll 16
-    for (int v = first; v < NV; ++v) {
-      const Vec old_row = at<L>(pivot + L * v);
-      scaled[v] = inverse * at<L>(other + L * v);
-      at<L>(other + L * v) = old_row;
-    }
-#pragma GCC unroll 16
-    for (int v = first; v < NV; ++v) at<L>(pivot + L * v) = scaled[v];
-#pragma GCC unroll 16
-    for (int i = 0; i < N; ++i) {
-      if (i == P) continue;
-      double* __restrict target = m + i * SW;
-      const double factor = target[P];
-#pragma GCC unroll 16
-      for (int v = first; v < NV; ++v) at<L>(target + L * v) -= factor * scaled[v];
-    }
-    return gaussJordanFrom<L, N, SW, P + 1>(m);
-  }
-}
-
 // The doubling state in its padded layouts (rows a whole number of L-lane vectors). A lives
 // inside a [x | A | T]-shaped block (stride SW) because the product that forms A' also forms T;
 // two such blocks alternate.

@@ -7,8 +7,11 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "sdlqr/common/discretize.hpp"
+#include "sdlqr/common/kernel_isa.hpp"
 #include "sdlqr/common/lqr.hpp"
 #include "sdlqr/common/quaternion.hpp"
 
@@ -35,6 +38,18 @@ SquareMatrix<N> taylorExp(const SquareMatrix<N>& M) {
   for (int i = 0; i < squarings; ++i) sum = (sum * sum).eval();
   return sum.template cast<double>();
 }
+
+// Every instruction set of the kernels that this CPU supports (kernel_isa.hpp); the best one is
+// restored when the test ends.
+struct EachKernelIsa {
+  std::vector<KernelIsa> isas;
+  EachKernelIsa() {
+    for (const KernelIsa isa : {KernelIsa::kBaseline, KernelIsa::kAvx2Fma, KernelIsa::kAvx512}) {
+      if (static_cast<int>(isa) <= static_cast<int>(bestKernelIsa())) isas.push_back(isa);
+    }
+  }
+  ~EachKernelIsa() { setKernelIsa(bestKernelIsa()); }
+};
 
 template <int N>
 double relativeError(const SquareMatrix<N>& actual, const SquareMatrix<N>& expected) {
@@ -73,6 +88,10 @@ TEST(Zoh, DoubleIntegratorMatchesClosedFormForSeveralSteps) {
   Eigen::Matrix2d A;
   A << 0, 1, 0, 0;
   const Eigen::Vector2d B(0, 1);
+  const EachKernelIsa each;
+  for (const KernelIsa isa : each.isas) {
+  SCOPED_TRACE(toString(isa));
+  setKernelIsa(isa);
   for (const double dt : {1e-4, 0.002, 0.01, 0.1, 1.0, 7.5}) {
     const DiscreteSystem<2, 1> d = discretizeZoh<2, 1>(A, B, dt);
     Eigen::Matrix2d Ad;
@@ -81,9 +100,14 @@ TEST(Zoh, DoubleIntegratorMatchesClosedFormForSeveralSteps) {
     EXPECT_LT((d.A - Ad).cwiseAbs().maxCoeff(), 1e-15 * std::max(1.0, dt)) << "dt " << dt;
     EXPECT_LT((d.B - Bd).cwiseAbs().maxCoeff(), 1e-15 * std::max(1.0, dt * dt)) << "dt " << dt;
   }
+  }
 }
 
-TEST(Zoh, QuadrotorSystemsMatchTaylorSeriesAtSeveralSteps) {
+TEST(Zoh, QuadrotorSystemsMatchTaylorSeriesAtSeveralStepsOnEveryInstructionSet) {
+  const EachKernelIsa each;
+  for (const KernelIsa isa : each.isas) {
+  SCOPED_TRACE(toString(isa));
+  setKernelIsa(isa);
   std::mt19937_64 rng(42);
   std::normal_distribution<double> normal(0.0, 1.0);
   double worst = 0.0;
@@ -118,8 +142,9 @@ TEST(Zoh, QuadrotorSystemsMatchTaylorSeriesAtSeveralSteps) {
     EXPECT_LT(error_full, 1e-14) << "case " << i << " dt " << dt;
     EXPECT_LT(error_r, 1e-14) << "case " << i << " dt " << dt;
   }
-  std::cout << "worst relative ZOH error vs long-double Taylor series: " << worst << "\n";
-  RecordProperty("worst_relative_error", std::to_string(worst));
+  std::cout << toString(isa) << ": worst relative ZOH error vs long-double Taylor series: " << worst << "\n";
+  RecordProperty(std::string("worst_relative_error_") + toString(isa), std::to_string(worst));
+  }
 }
 
 TEST(Zoh, TangentDiscretizationIsTheProjectionOfTheFullOne) {
