@@ -1,16 +1,24 @@
 // Speed of the state-dependent LQR gain (TARGET on the 2-core development machine: median <= 10 us,
 // p99 <= 25 us per full solve at dt = 0.01; zero heap allocations, see common_alloc_tests).
 // Every benchmark cycles through the fixture states so that no single easy case dominates.
+// Figures and how to read them: bench/README.md.
+//
+//   bench_gains [--kernel_isa=baseline|avx2|avx512] [Google Benchmark flags]
+//
+// --kernel_isa lowers the kernels' instruction set (kernel_isa.hpp) to time the other code paths.
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
+#include <string>
 #include <thread>
 #include <vector>
 
 #include "gains_states.hpp"
 #include "sdlqr/common/discretize.hpp"
+#include "sdlqr/common/kernel_isa.hpp"
 #include "sdlqr/common/lqr.hpp"
 #include "sdlqr/common/riccati.hpp"
 
@@ -210,4 +218,37 @@ BENCHMARK(BM_SolveLqrIterative)->Unit(benchmark::kMillisecond)->Iterations(46);
 }  // namespace
 }  // namespace sdlqr::bench
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    const std::string prefix = "--kernel_isa=";
+    if (arg.compare(0, prefix.size(), prefix) != 0) {
+      argv[kept++] = argv[i];
+      continue;
+    }
+    const std::string name = arg.substr(prefix.size());
+    sdlqr::KernelIsa isa;
+    if (name == "baseline") {
+      isa = sdlqr::KernelIsa::kBaseline;
+    } else if (name == "avx2") {
+      isa = sdlqr::KernelIsa::kAvx2Fma;
+    } else if (name == "avx512") {
+      isa = sdlqr::KernelIsa::kAvx512;
+    } else {
+      std::fprintf(stderr, "bench_gains: --kernel_isa must be baseline, avx2 or avx512\n");
+      return 2;
+    }
+    if (sdlqr::setKernelIsa(isa) != isa) {
+      std::fprintf(stderr, "bench_gains: this CPU does not support %s\n", name.c_str());
+      return 2;
+    }
+  }
+  argc = kept;
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  benchmark::AddCustomContext("kernel_isa", sdlqr::toString(sdlqr::activeKernelIsa()));
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
