@@ -106,9 +106,23 @@ using namespace sda_detail;
 // D^-1 [V_F + U_F | 2 U_Gamma] and its bottom rows [0 | I]. Squaring keeps the form:
 // [E | Phi] -> E [E | Phi] + [0 | Phi].
 //
-// kVector: the products and the elimination of vector_kernels.hpp / sda_kernel.hpp on L-lane
-// vectors, the elimination on [D | rhs] packed into whole vectors; else the auto-vectorized loops
-// of small_kernels.hpp (baseline build, L = 4 layout).
+// kVector: the products and the elimination of vector_kernels.hpp on L-lane vectors, the
+// elimination on [D | rhs] packed into whole vectors; else the auto-vectorized loops of
+// small_kernels.hpp (baseline build, L = 4 layout).
+
+// The vector product of two top-row blocks, one out-of-line copy per instruction set: inlined at
+// each of its call sites (one per Padé degree) it made the exponential 55 KB of code, most of it
+// cold, which costs instruction-cache misses in every solve.
+template <int NX, int SP>
+SDLQR_AVX512_TARGET __attribute__((noinline)) void zohProductAvx512(const double* a, const double* b, double* out) {
+  product<8, 24, NX, 0, NX, SP / 8, false, false, SP, SP, SP>(a, b, out);
+}
+
+template <int NX, int SP>
+SDLQR_AVX2_TARGET __attribute__((noinline)) void zohProductAvx2(const double* a, const double* b, double* out) {
+  product<4, 9, NX, 0, NX, SP / 4, false, false, SP, SP, SP>(a, b, out);
+}
+
 template <int NX, int NU, int L, bool kVector>
 struct ZohKernel {
   static constexpr int NP = NX + NU;
@@ -116,13 +130,14 @@ struct ZohKernel {
   // [D | rhs] for the Gauss-Jordan solve: packed (rhs from column NX) or each block padded.
   static constexpr int RHS = kVector ? NX : padded(NX);
   static constexpr int SG = kVector ? roundUp(NX + NP, L) : padded(NX) + SP;
-  static constexpr int kAccumulators = L == 8 ? 24 : 9;
   using Top = Block<NX, NP, SP>;
 
   // out = first NX columns of `left` (an F power) times `right`.
   static SDLQR_SDA_INLINE void product(const Top& left, const Top& right, Top& out) {
-    if constexpr (kVector) {
-      sda_detail::product<L, kAccumulators, NX, 0, NX, SP / L, false, false, SP, SP, SP>(left.v, right.v, out.v);
+    if constexpr (kVector && L == 8) {
+      zohProductAvx512<NX, SP>(left.v, right.v, out.v);
+    } else if constexpr (kVector) {
+      zohProductAvx2<NX, SP>(left.v, right.v, out.v);
     } else {
       multiply<NX, SP, false, false, SP, SP, SP>(left.v, right.v, out.v);
     }
