@@ -118,6 +118,9 @@ SDLQR_SDA_INLINE void completeUpper(double* m) {
 // clear in row r + h), the remaining edge entries one by one.
 template <int L, int N, int SA, int SO>
 SDLQR_SDA_INLINE void transpose(const double* __restrict a, double* __restrict out) {
+#if defined(__clang__)
+  constexpr int B = 0;  // __builtin_shuffle is GCC's: element by element
+#else
   using Vec = typename Lanes<L>::Vec;
   using Mask = typename Lanes<L>::Mask;
   constexpr int B = N / L * L;  // rows and columns covered by whole blocks
@@ -145,6 +148,7 @@ SDLQR_SDA_INLINE void transpose(const double* __restrict a, double* __restrict o
       for (int r = 0; r < L; ++r) at<L>(out + (j0 + r) * SO + i0) = rows[r];
     }
   }
+#endif
   for (int i = 0; i < N; ++i) {
     for (int j = i < B ? B : 0; j < N; ++j) out[j * SO + i] = a[i * SA + j];
   }
