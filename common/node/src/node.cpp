@@ -62,7 +62,17 @@ Node::Node(std::string process, const ProcessOptions& options)
 
 Node::~Node() = default;
 
-void Node::dispatch(const lcm::ReceiveBuffer* rbuf, const std::string&, SubscriptionBase* sub) { sub->onMessage(rbuf); }
+void Node::dispatch(const lcm_recv_buf_t* rbuf, const char*, void* sub) {
+  static_cast<SubscriptionBase*>(sub)->onMessage(rbuf->data, rbuf->data_size);
+}
+
+const std::string& Node::publishChannel(std::string_view base) {
+  for (const auto& [known_base, full] : publish_channels_) {
+    if (known_base == base) return full;
+  }
+  publish_channels_.emplace_back(std::string(base), channel(base));
+  return publish_channels_.back().second;
+}
 
 void Node::dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub) {
   ++sub->node->received_;
@@ -86,8 +96,9 @@ void Node::addSubscription(const std::string& channel, std::unique_ptr<Subscript
     if (std::string_view(".[]()*+?^$|\\{}").find(c) != std::string_view::npos) pattern.push_back('\\');
     pattern.push_back(c);
   }
-  lcm::Subscription* handle = lcm_->subscribeFunction(pattern, &Node::dispatch, sub.get());
-  if (queue_capacity > 0) handle->setQueueCapacity(queue_capacity);
+  lcm_subscription_t* handle = lcm_subscribe(lcm_->getUnderlyingLCM(), pattern.c_str(), &Node::dispatch, sub.get());
+  if (!handle) throw std::runtime_error("cannot subscribe to " + channel);
+  if (queue_capacity > 0) lcm_subscription_set_queue_capacity(handle, queue_capacity);
   subscriptions_.push_back(std::move(sub));
 }
 

@@ -1,37 +1,16 @@
-// Zero heap allocation per gain solve: global operator new/delete are replaced by counting
-// versions for this binary only (a separate test executable, so nothing else is affected).
+// Zero heap allocation per gain solve, counted by the replaced operator new of tests/support.
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
 #include <iostream>
 #include <limits>
-#include <new>
 #include <random>
 #include <vector>
 
+#include "allocation_counter.hpp"
 #include "sdlqr/common/lqr.hpp"
 #include "sdlqr/common/quaternion.hpp"
 
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace sdlqr {
 namespace {
@@ -74,9 +53,9 @@ TEST(LqrAllocation, TangentSolvesAllocateNothing) {
   const std::vector<Point> points = drawPoints(1000);
   const LqrParams params;
   int ok = 0;
-  const long before = g_allocations.load();
+  const long before = sdlqr::testing::allocationCount();
   for (const Point& p : points) ok += solveLqr(p.x, p.u, params).status == SolveStatus::kOk;
-  const long allocations = g_allocations.load() - before;
+  const long allocations = sdlqr::testing::allocationCount() - before;
   std::cout << "1000 tangent solves: " << allocations << " allocations, " << ok << " ok\n";
   EXPECT_EQ(allocations, 0);
   EXPECT_EQ(ok, 1000);
@@ -98,7 +77,7 @@ TEST(LqrAllocation, IterativeAndFailingSolvesAllocateNothing) {
   State nan_x = points[0].x;
   nan_x[kVel] = std::numeric_limits<double>::quiet_NaN();
   int finished = 0, not_converged = 0, rejected = 0;
-  const long before = g_allocations.load();
+  const long before = sdlqr::testing::allocationCount();
   for (const Point& p : points) {
     const LqrResult result = solveLqr(p.x, p.u, iterative);
     finished += result.iterations > 0;
@@ -107,7 +86,7 @@ TEST(LqrAllocation, IterativeAndFailingSolvesAllocateNothing) {
   }
   rejected += solveLqr(zero_q, points[0].u, LqrParams()).status == SolveStatus::kInvalidInput;
   rejected += solveLqr(nan_x, points[0].u, LqrParams()).status == SolveStatus::kInvalidInput;
-  const long allocations = g_allocations.load() - before;
+  const long allocations = sdlqr::testing::allocationCount() - before;
   std::cout << "20 iterative, 20 not converged, 2 rejected solves: " << allocations << " allocations\n";
   std::cout << "iterative statuses: " << statuses[0] << " ok, " << statuses[1] << " not converged, " << statuses[2]
             << " numerical failure\n";
@@ -119,10 +98,10 @@ TEST(LqrAllocation, IterativeAndFailingSolvesAllocateNothing) {
 
 TEST(LqrAllocation, CounterSeesAllocations) {
   // Guards the test itself: a vector push must be counted.
-  const long before = g_allocations.load();
-  std::vector<double>* v = new std::vector<double>(100);
-  delete v;
-  EXPECT_GE(g_allocations.load() - before, 2);
+  const sdlqr::testing::AllocationCounter counter;
+  std::vector<int>* volatile escaped = new std::vector<int>(100);  // volatile: new/delete not elided
+  delete escaped;
+  EXPECT_GE(counter.count(), 2);
 }
 
 }  // namespace

@@ -1,46 +1,15 @@
 // The estimator allocates nothing after construction: onImu and onVio run in the 250 Hz / 1 kHz
-// path. Every global operator new of this binary is counted while `g_counting` is set.
+// path. Every global operator new of this binary is counted (tests/support/allocation_counter).
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
+#include <vector>
 
+
+#include "allocation_counter.hpp"
 #include "estimator_run.hpp"
 #include "sdlqr/estimator/estimator.hpp"
 
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-
-void* countedAllocate(std::size_t size) {
-  if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-}  // namespace
-
-void* operator new(std::size_t size) { return countedAllocate(size); }
-void* operator new[](std::size_t size) { return countedAllocate(size); }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  try {
-    return countedAllocate(size);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  try {
-    return countedAllocate(size);
-  } catch (...) {
-    return nullptr;
-  }
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace sdlqr::estimator::test {
 namespace {
@@ -60,8 +29,7 @@ TEST(EstimatorAllocation, OnImuAndOnVioNeverAllocate) {
 
   // WHEN every event is handed over with allocation counting on
   int64_t outputs = 0;
-  g_allocations = 0;
-  g_counting = true;
+  const sdlqr::testing::AllocationCounter counter;
   for (const SensorEvent& e : events) {
     if (e.kind == SensorEvent::Kind::kImu) {
       if (estimator.onImu(e.imu)) ++outputs;
@@ -69,11 +37,11 @@ TEST(EstimatorAllocation, OnImuAndOnVioNeverAllocate) {
       estimator.onVio(e.vio);
     }
   }
-  g_counting = false;
+  const long allocations = counter.count();
 
   // THEN nothing was allocated, and the run exercised what it should have
-  std::cout << "[ measured ] " << g_allocations.load() << " allocations over " << outputs << " outputs\n";
-  EXPECT_EQ(g_allocations.load(), 0);
+  std::cout << "[ measured ] " << allocations << " allocations over " << outputs << " outputs\n";
+  EXPECT_EQ(allocations, 0);
   EXPECT_GT(outputs, 2900);
   EXPECT_EQ(estimator.counters().initializations, 2);
   EXPECT_EQ(estimator.counters().accel_clipping, 1);
@@ -84,12 +52,10 @@ TEST(EstimatorAllocation, OnImuAndOnVioNeverAllocate) {
 
 TEST(EstimatorAllocation, TheCounterSeesAllocations) {
   // The zero above means something only if the replaced operator new is really in use.
-  g_allocations = 0;
-  g_counting = true;
-  auto* p = new std::vector<int>(100);
-  g_counting = false;
-  delete p;
-  EXPECT_GE(g_allocations.load(), 2);
+  const sdlqr::testing::AllocationCounter counter;
+  std::vector<int>* volatile escaped = new std::vector<int>(100);  // volatile: new/delete not elided
+  delete escaped;
+  EXPECT_GE(counter.count(), 2);
 }
 
 }  // namespace

@@ -1,32 +1,11 @@
-// step() of the bodyrate loop allocates nothing, in every mode: global operator new/delete are
-// replaced by counting versions in this binary only.
+// step() of the bodyrate loop allocates nothing, in every mode (counted by the replaced operator
+// new of tests/support).
 
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <cstdlib>
-#include <new>
 
+#include "allocation_counter.hpp"
 #include "flight_harness.hpp"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace sdlqr::test {
 namespace {
@@ -36,9 +15,9 @@ TEST(BodyrateLoopAllocation, StepAllocatesNothingInAnyMode) {
   h.plant.startHovering(3.0);
   long during_steps = 0;
   auto counted = [&](auto&& body) {
-    const long before = g_allocations.load();
+    const long before = sdlqr::testing::allocationCount();
     body();
-    during_steps += g_allocations.load() - before;
+    during_steps += sdlqr::testing::allocationCount() - before;
   };
   counted([&] { h.tick(); });                                   // disarmed
   h.command(CommandType::kArm);

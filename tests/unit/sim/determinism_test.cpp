@@ -2,30 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
-#include <cstdlib>
 #include <cstring>
-#include <new>
 #include <vector>
 
+#include "allocation_counter.hpp"
 #include "sim_test_support.hpp"
 
-// Counting replacements of the global allocation functions for this test binary. Only the
-// window inside AllocationCounter is compared, so the other tests are unaffected.
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t size) { return ::operator new(size); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace sdlqr::sim {
 namespace {
@@ -128,13 +110,13 @@ TEST(Allocation, StepAllocatesNothing) {
   sim.addDisturbance(hold);
   sim.setMotorCommand(armed(1.1 * hoverThrust(v)));
   int outputs = 0;
-  const long before = g_allocations.load();
+  const long before = sdlqr::testing::allocationCount();
   for (int i = 0; i < 5000; ++i) {
     if (i % 10 == 0) sim.setMotorCommand(armed((1.1 + 0.01 * (i % 7)) * hoverThrust(v)));
     const StepOutput out = sim.step();
     outputs += out.imu.has_value() + out.vio.has_value() + out.truth.has_value();
   }
-  const long allocations = g_allocations.load() - before;
+  const long allocations = sdlqr::testing::allocationCount() - before;
   std::cout << "allocations in 5000 steps (" << outputs << " outputs): " << allocations << "\n";
   EXPECT_GT(outputs, 5000);
   EXPECT_EQ(allocations, 0);
@@ -142,10 +124,10 @@ TEST(Allocation, StepAllocatesNothing) {
 
 TEST(Allocation, CounterSeesAllocations) {
   // Guards the test above: the counter must be live in this binary.
-  const long before = g_allocations.load();
-  auto* p = new std::vector<int>(100);
-  delete p;
-  EXPECT_GE(g_allocations.load() - before, 2);
+  const sdlqr::testing::AllocationCounter counter;
+  std::vector<int>* volatile escaped = new std::vector<int>(100);  // volatile: new/delete not elided
+  delete escaped;
+  EXPECT_GE(counter.count(), 2);
 }
 
 }  // namespace

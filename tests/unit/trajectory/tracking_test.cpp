@@ -1,26 +1,13 @@
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
-#include <new>
 
+#include "allocation_counter.hpp"
 #include "sdlqr/common/quaternion.hpp"
 #include "sdlqr/trajectory/paper_cases.hpp"
 #include "sdlqr/trajectory/sampling.hpp"
 #include "sdlqr/trajectory/tracking.hpp"
 
-// Counts heap allocations, to show that update() allocates nothing.
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size ? size : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace sdlqr::trajectory {
 namespace {
@@ -280,14 +267,14 @@ TEST(TrajectoryTrackerLoad, UpdateAllocatesNothing) {
   const Trajectory fast = sampleTrajectory(paperMinSnapFast(TrajectoryParams{}), 0.1, 9.81);
   TrajectoryTracker tracker;
   ASSERT_EQ(tracker.load(fast, 0.0), "");
-  const long before = g_allocations.load();
+  const sdlqr::testing::AllocationCounter allocations;
   for (int tick = 0; tick < 2000; ++tick) {
     const double t = tick * 0.01;
     if (tick == 1000) tracker.setMode(ReferenceMode::kTemporal, t);
     const TrackingOutput out = tracker.update(t, position(fast.samples[std::min<std::size_t>(tick / 10, 110)].x));
     ASSERT_TRUE(out.x.allFinite());
   }
-  EXPECT_EQ(g_allocations.load() - before, 0);
+  EXPECT_EQ(allocations.count(), 0);
 }
 
 TEST(TrajectoryTrackerLoad, PaperDisturbanceHeldVehicleResumesWithoutSkipping) {

@@ -94,17 +94,17 @@ class Node {
  private:
   struct SubscriptionBase {
     virtual ~SubscriptionBase() = default;
-    virtual void onMessage(const lcm::ReceiveBuffer* rbuf) = 0;
+    virtual void onMessage(const void* data, uint32_t size) = 0;
     Node* node = nullptr;
     int64_t last_seq = -1;
   };
   template <class T>
   struct TypedSubscription : SubscriptionBase {
     std::function<void(const T&)> handler;
-    T message;
-    void onMessage(const lcm::ReceiveBuffer* rbuf) override {
+    T message;  // decoded in place: fixed-size types never allocate
+    void onMessage(const void* data, uint32_t size) override {
       ++node->received_;
-      if (message.decode(rbuf->data, 0, rbuf->data_size) < 0) {
+      if (message.decode(data, 0, static_cast<int>(size)) < 0) {
         node->countRejected(node->reject_decode_);
         return;
       }
@@ -116,11 +116,14 @@ class Node {
     Node* node = nullptr;
     RawHandler handler;
   };
-  static void dispatch(const lcm::ReceiveBuffer* rbuf, const std::string& channel, SubscriptionBase* sub);
+  // C callback: LCM's C++ wrapper would build a std::string of the channel for every message.
+  static void dispatch(const lcm_recv_buf_t* rbuf, const char* channel, void* sub);
   static void dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub);
   void noteSequence(SubscriptionBase& sub, int64_t seq);
   void addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity);
   void publishRaw(const std::string& channel, const void* data, int size);
+  // Full channel name of a base name, built once: publishing then never allocates.
+  const std::string& publishChannel(std::string_view base);
 
   std::string process_;
   std::string vehicle_;
@@ -128,6 +131,7 @@ class Node {
   std::vector<std::unique_ptr<SubscriptionBase>> subscriptions_;
   std::vector<std::unique_ptr<RawSubscription>> raw_subscriptions_;
   std::vector<uint8_t> encode_buffer_;
+  std::vector<std::pair<std::string, std::string>> publish_channels_;  // base -> prefixed
   Counters counters_;
   Counters::Id reject_decode_;
   ProcessState state_ = ProcessState::kStarting;
@@ -161,7 +165,7 @@ void Node::publish(std::string_view base, const T& msg) {
     setLastError("encode failed on " + std::string(base));
     return;
   }
-  publishRaw(channel(base), encode_buffer_.data(), size);
+  publishRaw(publishChannel(base), encode_buffer_.data(), size);
 }
 
 }  // namespace sdlqr::node
