@@ -3,11 +3,12 @@
 namespace sdlqr::controller {
 
 ControllerParams ControllerParams::load(const ConfigReader& controller) {
-  controller.allowOnly({"rate_hz", "gains_stale_s", "gains_fallback_s", "max_position_error", "max_velocity_error",
+  controller.allowOnly({"rate_hz", "max_prediction_s", "gains_stale_s", "gains_fallback_s", "max_position_error", "max_velocity_error",
                         "takeoff_speed", "landing_speed", "landed_speed", "landed_time", "landing_undershoot",
                         "tracking"});
   ControllerParams p;
   controller.read("rate_hz", p.rate_hz);
+  controller.read("max_prediction_s", p.max_prediction_s);
   controller.read("gains_stale_s", p.gains_stale_s);
   controller.read("gains_fallback_s", p.gains_fallback_s);
   controller.read("max_position_error", p.max_position_error);
@@ -36,6 +37,7 @@ ControllerParams ControllerParams::load(const ConfigReader& controller) {
 
 std::string ControllerParams::invalidReason() const {
   if (!(rate_hz >= 1.0 && rate_hz <= 1000.0)) return "rate_hz: must be in [1, 1000] Hz";
+  if (!(max_prediction_s >= 0.0 && max_prediction_s <= 0.02)) return "max_prediction_s: must be in [0, 0.02] s";
   if (!(gains_stale_s > 0.0)) return "gains_stale_s: must be > 0";
   if (!(gains_fallback_s > gains_stale_s)) return "gains_fallback_s: must be > gains_stale_s";
   if (!(max_position_error > 0.0)) return "max_position_error: must be > 0";

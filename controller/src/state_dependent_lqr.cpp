@@ -4,6 +4,7 @@
 
 #include "sdlqr/common/lqr.hpp"
 #include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/controller/state_prediction.hpp"
 
 namespace sdlqr::controller {
 
@@ -31,11 +32,18 @@ GainMatrix yawedHoverGain(const GainMatrix& K0, double yaw) {
 }
 
 int64_t periodUtime(const ControllerParams& params) { return static_cast<int64_t>(1e6 / params.rate_hz + 0.5); }
+int64_t maxPredictionUtime(const ControllerParams& params) {
+  return static_cast<int64_t>(1e6 * params.max_prediction_s + 0.5);
+}
 
 }  // namespace
 
 StateDependentLqr::StateDependentLqr(const LqrParams& lqr, const ControllerParams& params)
-    : lqr_(lqr), params_(params), references_(params, lqr.gravity), fallback_K_(solveHoverGain(lqr)) {}
+    : lqr_(lqr),
+      params_(params),
+      references_(params, lqr.gravity),
+      fallback_K_(solveHoverGain(lqr)),
+      last_thrust_(lqr.gravity) {}
 
 void StateDependentLqr::setGains(const GainSet& gains) {
   if (has_gains_ && gains.utime < gains_.utime) return;  // a late, older solve
@@ -78,13 +86,26 @@ const GainMatrix& StateDependentLqr::chooseGain(int64_t now_utime, GainsFreshnes
   return fallback_K_;
 }
 
-bool StateDependentLqr::onStateEstimate(const StateEstimate& estimate, Tick& out) {
-  latest_ = estimate;
+bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out) {
+  const int64_t interval = has_estimate_ ? received.utime - latest_.utime : 0;
+  latest_ = received;
   has_estimate_ = true;
-  if (estimate.utime < next_tick_utime_) return false;
+  // Ticks sit on a fixed grid of simulation time. The last estimate before a grid point is
+  // carried forward to it; an estimate at or past it (the first one, or after missing ones) ticks
+  // at its own time.
+  int64_t tick_utime = received.utime;
+  if (received.utime < next_tick_utime_) {
+    const int64_t lead = next_tick_utime_ - received.utime;
+    const bool last_before_tick = interval > 0 && received.utime + interval > next_tick_utime_;
+    if (!last_before_tick || lead > maxPredictionUtime(params_)) return false;
+    tick_utime = next_tick_utime_;
+  }
   const int64_t period = periodUtime(params_);
-  next_tick_utime_ = (estimate.utime / period + 1) * period;
-  if (estimate.status == EstimatorStatus::kInitializing) return false;
+  next_tick_utime_ = (tick_utime / period + 1) * period;
+  if (received.status == EstimatorStatus::kInitializing) return false;
+  const StateEstimate estimate = tick_utime == received.utime
+                                     ? received
+                                     : predictEstimate(received, last_thrust_, tick_utime, lqr_.gravity);
 
   Reference& reference = out.reference;
   if (!references_.update(estimate, reference)) {
@@ -125,7 +146,9 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& estimate, Tick& out
   command.saturated = static_cast<int8_t>((control.rate_saturated ? 1 : 0) | (control.thrust_saturated ? 2 : 0));
   command.gains_status = freshness;
 
+  last_thrust_ = command.thrust;
   ++status_.ticks;
+  if (estimate.utime != received.utime) ++status_.predicted_ticks;
   status_.gains = freshness;
   if (freshness == GainsFreshness::kFallback) ++status_.fallback_ticks;
   if (freshness == GainsFreshness::kStale) ++status_.stale_ticks;

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "sdlqr/common/lqr.hpp"
 #include "sdlqr/common/quaternion.hpp"
 #include "sdlqr/controller/state_dependent_lqr.hpp"
@@ -37,7 +39,7 @@ void takeOffAndHold(StateDependentLqr& controller, double yaw = 0.0) {
   controller.handleCommand(command(CommandType::kGoto, Vec3(0, 0, 1), yaw));
 }
 
-TEST(StateDependentLqr, TicksAt100HzOfSimulationTimeFromA250HzEstimate) {
+TEST(StateDependentLqr, TicksExactlyEvery10msFromTheLastOfA250HzEstimateBeforeTheTick) {
   const LqrParams lqr;
   StateDependentLqr controller(lqr, ControllerParams{});
   takeOffAndHold(controller);
@@ -47,8 +49,33 @@ TEST(StateDependentLqr, TicksAt100HzOfSimulationTimeFromA250HzEstimate) {
   for (int64_t utime = 20000; utime < 1020000; utime += 4000) {
     if (!controller.onStateEstimate(estimateAt(utime, Vec3(0, 0, 1)), tick)) continue;
     ++ticks;
+    EXPECT_EQ(tick.command.utime % 10000, 0) << "on the 10 ms grid";
+    EXPECT_EQ(tick.command.state_seq, utime / 4000) << "computed from this estimate";
+    EXPECT_GE(tick.command.utime, utime);
+    EXPECT_LT(tick.command.utime - utime, 4000) << "the newest estimate before the tick";
+    EXPECT_EQ(tick.reference.utime, tick.command.utime);
+    if (last >= 0) {
+      EXPECT_EQ(tick.command.utime - last, 10000);
+    }
+    last = tick.command.utime;
+  }
+  EXPECT_EQ(ticks, 100);
+  EXPECT_EQ(controller.status().predicted_ticks, 50) << "every other tick falls between two estimates";
+}
+
+TEST(StateDependentLqr, WithoutPredictionTicksOnTheFirstEstimateAtOrAfterTheTick) {
+  const LqrParams lqr;
+  ControllerParams params;
+  params.max_prediction_s = 0.0;
+  StateDependentLqr controller(lqr, params);
+  takeOffAndHold(controller);
+  StateDependentLqr::Tick tick;
+  int ticks = 0;
+  int64_t last = -1;
+  for (int64_t utime = 20000; utime < 1020000; utime += 4000) {
+    if (!controller.onStateEstimate(estimateAt(utime, Vec3(0, 0, 1)), tick)) continue;
+    ++ticks;
     EXPECT_EQ(tick.command.utime, utime);
-    EXPECT_EQ(tick.command.state_seq, utime / 4000);
     if (last >= 0) {
       EXPECT_GE(tick.command.utime - last, 8000);
       EXPECT_LE(tick.command.utime - last, 12000);
@@ -56,6 +83,21 @@ TEST(StateDependentLqr, TicksAt100HzOfSimulationTimeFromA250HzEstimate) {
     last = tick.command.utime;
   }
   EXPECT_EQ(ticks, 100);
+  EXPECT_EQ(controller.status().predicted_ticks, 0);
+}
+
+TEST(StateDependentLqr, MissingEstimatesMakeALateTickAtTheEstimateTimeThenTheGridResumes) {
+  const LqrParams lqr;
+  StateDependentLqr controller(lqr, ControllerParams{});
+  takeOffAndHold(controller);
+  StateDependentLqr::Tick tick;
+  std::vector<int64_t> tick_times;
+  for (int64_t utime = 20000; utime < 100000; utime += 4000) {
+    if (utime > 40000 && utime < 64000) continue;  // 40 .. 64 ms: nothing arrives
+    if (controller.onStateEstimate(estimateAt(utime, Vec3(0, 0, 1)), tick)) tick_times.push_back(tick.command.utime);
+  }
+  const std::vector<int64_t> expected = {20000, 30000, 40000, 64000, 70000, 80000, 90000};
+  EXPECT_EQ(tick_times, expected);
 }
 
 TEST(StateDependentLqr, WithoutGainsTheYawedHoverFallbackEqualsTheSolverAtThatYaw) {

@@ -10,6 +10,7 @@ namespace sdlqr::controller {
 
 struct ControllerParams {
   double rate_hz = 100.0;             // [Hz] control rate in simulation time (paper: 100 Hz)
+  double max_prediction_s = 0.005;    // [s] longest an estimate is carried forward to a tick (0: never)
   double gains_stale_s = 0.3;         // [s] GAINS older than this are flagged stale (3 missed updates)
   double gains_fallback_s = 1.0;      // [s] GAINS older than this: switch to the precomputed hover K
   double max_position_error = 1.0;    // [m] norm bound on p - p_ref fed to K (paper §IV-A: bounded velocity)

@@ -16,6 +16,7 @@ struct ControllerStatus {
   GainsFreshness gains = GainsFreshness::kFallback;
   FlightPhase phase = FlightPhase::kIdle;
   int64_t ticks = 0;
+  int64_t predicted_ticks = 0;  // computed from the last estimate before the tick, carried forward
   int64_t fallback_ticks = 0;
   int64_t stale_ticks = 0;
   int64_t saturated_ticks = 0;
@@ -40,8 +41,9 @@ class StateDependentLqr {
     RateCommand command;
     Reference reference;
   };
-  // Returns true when this estimate starts a new control period and fills `out`; false between
-  // ticks, before the estimator is initialised, and while idle on the ground.
+  // Returns true when this estimate is the one to compute the next tick from and fills `out`
+  // (stamped with the tick's time); false between ticks, before the estimator is initialised, and
+  // while idle on the ground.
   bool onStateEstimate(const StateEstimate& estimate, Tick& out);
 
   const ControllerStatus& status() const { return status_; }
@@ -59,6 +61,7 @@ class StateDependentLqr {
   StateEstimate latest_;
   bool has_estimate_ = false;
   int64_t next_tick_utime_ = 0;
+  double last_thrust_;  // [m/s^2] for carrying an estimate forward to the tick
   int64_t command_seq_ = 0;
   int64_t reference_seq_ = 0;
   ControllerStatus status_;
