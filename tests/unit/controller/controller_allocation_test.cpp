@@ -1,0 +1,100 @@
+// The 100 Hz tick (StateDependentLqr::onStateEstimate) and the 10 Hz solve (GainScheduler) allocate
+// nothing once running: counted by the replaced operator new of tests/support, over hover ticks,
+// fresh/stale/fallback gains, and spatial and temporal tracking of the paper's fast trajectory.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+#include "allocation_counter.hpp"
+#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/controller/gain_scheduler.hpp"
+#include "sdlqr/controller/state_dependent_lqr.hpp"
+#include "sdlqr/trajectory/paper_cases.hpp"
+#include "sdlqr/trajectory/sampling.hpp"
+
+namespace sdlqr::controller {
+namespace {
+
+StateEstimate estimateAt(int64_t utime, const Vec3& p) {
+  StateEstimate e;
+  e.utime = utime;
+  e.seq = utime / 4000;
+  e.position = p;
+  e.status = EstimatorStatus::kOk;
+  return e;
+}
+
+Command command(CommandType type, const Vec3& position) {
+  Command c;
+  c.command = type;
+  c.position = position;
+  return c;
+}
+
+TEST(ControllerAllocation, TicksAndSolvesAllocateNothing) {
+  const LqrParams lqr;
+  StateDependentLqr controller(lqr, ControllerParams{});
+  GainScheduler scheduler(lqr, 10.0);
+  StateDependentLqr::Tick tick;
+  controller.onStateEstimate(estimateAt(0, Vec3::Zero()), tick);
+  controller.handleCommand(command(CommandType::kTakeoff, Vec3(0, 0, 1)));
+  const Trajectory fast = trajectory::sampleTrajectory(trajectory::paperMinSnapFast(trajectory::TrajectoryParams{}),
+                                                       0.1, lqr.gravity);
+  ASSERT_GT(fast.samples.size(), 50u);
+
+  int64_t ticks = 0;
+  int64_t solves = 0;
+  const sdlqr::testing::AllocationCounter counter;
+  auto fly = [&](int64_t from, int64_t to, bool with_gains) {
+    for (int64_t utime = from; utime < to; utime += 4000) {
+      const double t = 1e-6 * static_cast<double>(utime);
+      const StateEstimate e = estimateAt(utime, Vec3(0.3 * std::sin(t), 0.2 * std::cos(t), 1.0));
+      if (with_gains && scheduler.due(e)) {
+        GainSet gains;
+        if (scheduler.solve(e, gains) == SolveStatus::kOk) {
+          controller.setGains(gains);
+          ++solves;
+        }
+      }
+      if (controller.onStateEstimate(e, tick)) {
+        scheduler.setReference(tick.reference);
+        ++ticks;
+      }
+    }
+  };
+  fly(4000, 3'000'000, true);      // take-off and hold with fresh gains
+  fly(3'000'000, 5'000'000, false);  // gains stop: stale, then the fallback hover K
+  const long hover_allocations = counter.count();
+
+  ASSERT_EQ(controller.setTrajectory(fast), "");  // copies the samples: allowed, on receipt
+  const sdlqr::testing::AllocationCounter tracking_counter;
+  fly(5'000'000, 12'000'000, true);
+  ParamsUpdate temporal;
+  temporal.field_mask = ParamsUpdate::kTracking;
+  temporal.tracking = ReferenceMode::kTemporal;
+  controller.applyParams(temporal);
+  fly(12'000'000, 18'000'000, true);
+  const long tracking_allocations = tracking_counter.count();
+
+  std::cout << "[ measured ] " << hover_allocations << " + " << tracking_allocations << " allocations over "
+            << ticks << " ticks and " << solves << " solves\n";
+  EXPECT_EQ(hover_allocations, 0);
+  EXPECT_EQ(tracking_allocations, 0);
+  EXPECT_GT(ticks, 1700);
+  EXPECT_GT(solves, 150);
+  EXPECT_GT(controller.status().fallback_ticks, 0);
+  EXPECT_GT(controller.status().stale_ticks, 0);
+}
+
+TEST(ControllerAllocation, TheCounterSeesAllocations) {
+  const sdlqr::testing::AllocationCounter counter;
+  std::vector<int>* volatile escaped = new std::vector<int>(100);  // volatile: new/delete not elided
+  delete escaped;
+  EXPECT_GE(counter.count(), 2);
+}
+
+}  // namespace
+}  // namespace sdlqr::controller
