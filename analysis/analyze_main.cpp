@@ -5,6 +5,8 @@
 
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/common/cli.hpp"
+#include "sdlqr/common/config.hpp"
+#include "sdlqr/common/params.hpp"
 
 using namespace sdlqr;
 
@@ -33,7 +35,12 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
       throw std::invalid_argument(e.what());
     }
-    const analysis::FlightReport report = analysis::analyzeFlight(log, scenario);
+    // Thrust limits of the vehicle the scenario flew (criterion thrust_limit_violations_max).
+    const LqrParams lqr = LqrParams::load(loadVehicleConfig(scenario.vehicle_path).child("lqr"));
+    analysis::AnalysisOptions options;
+    options.path.thrust_min = lqr.c_min;
+    options.path.thrust_max = lqr.c_max;
+    const analysis::FlightReport report = analysis::analyzeFlight(log, scenario, options);
     analysis::writeSummary(report, std::cout);
     if (!summary_path.empty()) {
       std::ofstream out(summary_path);

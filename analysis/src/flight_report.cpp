@@ -16,7 +16,7 @@ double seconds(int64_t utime) { return static_cast<double>(utime) * 1e-6; }
 
 struct Event {
   double t = 0.0;
-  enum Kind { kTakeoff, kGoto, kLand, kPull } kind = kGoto;
+  enum Kind { kTakeoff, kGoto, kLand, kPull, kTrajectory } kind = kGoto;
   Vec3 position = Vec3::Zero();
   const Disturbance* disturbance = nullptr;
   std::string label;
@@ -41,6 +41,14 @@ std::vector<Event> flightEvents(const logger::FlightLog& log, const mission::Sce
     e.disturbance = &d;
     events.push_back(e);
   }
+  // A trajectory ends the setpoint window before it (path_tracking.hpp judges the flight on it).
+  for (const Trajectory& t : log.trajectory.messages) {
+    Event e;
+    e.t = seconds(t.start_utime > 0 ? t.start_utime : t.utime);
+    e.kind = Event::kTrajectory;
+    e.label = "trajectory";
+    events.push_back(e);
+  }
   std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.t < b.t; });
   // Labels come from the scenario: its events of the same kind, in the same order.
   std::vector<const mission::ScenarioEvent*> commands, pulls;
@@ -55,6 +63,7 @@ std::vector<Event> flightEvents(const logger::FlightLog& log, const mission::Sce
   }
   size_t next_command = 0, next_pull = 0;
   for (Event& e : events) {
+    if (e.kind == Event::kTrajectory) continue;
     const mission::ScenarioEvent* source = nullptr;
     if (e.kind == Event::kPull) {
       if (next_pull < pulls.size()) source = pulls[next_pull++];
@@ -146,7 +155,11 @@ const std::set<std::string>& knownCriteria() {
       "jump_settle_error", "jump_settle_time", "jump_max_overshoot", "hover_error", "pull_return_error",
       "pull_return_time", "estimator_position_rms", "estimator_attitude_rms_deg", "gains_rate_min",
       "gains_rate_max", "rate_cmd_rate_min", "rate_cmd_rate_max", "state_est_rate_min", "state_est_rate_max",
-      "max_tilt_deg", "touchdown_speed_max", "rate_cmd_jitter_p99_ms", "stack_cpu_percent_max"};
+      "max_tilt_deg", "touchdown_speed_max", "rate_cmd_jitter_p99_ms", "stack_cpu_percent_max",
+      // trajectories (path_tracking.hpp)
+      "path_error_rms", "path_error_max", "skipped_samples_max", "skipped_samples_min", "skip_radius", "skip_window",
+      "path_return_error", "path_return_time", "trajectory_laps_min", "trajectory_completed",
+      "thrust_limit_violations_max"};
   return keys;
 }
 
@@ -189,8 +202,11 @@ FlightReport analyzeFlight(const logger::FlightLog& log, const mission::Scenario
   const double settle_error = has("jump_settle_error") ? criterion("jump_settle_error") : options.settle_error;
   const double return_error = has("pull_return_error") ? criterion("pull_return_error") : options.return_error;
   Vec3 previous_setpoint = Vec3::Constant(kNotReached);
+  bool on_trajectory = false;  // pulls while tracking a trajectory are judged against the path
   for (size_t i = 0; i < events.size(); ++i) {
     const Event& e = events[i];
+    if (e.kind != Event::kPull) on_trajectory = e.kind == Event::kTrajectory;
+    if (on_trajectory) previous_setpoint = Vec3::Constant(kNotReached);
     const double end = i + 1 < events.size() ? events[i + 1].t : log_end;
     if (e.kind == Event::kTakeoff || e.kind == Event::kGoto) {
       SetpointWindow w;
@@ -222,7 +238,7 @@ FlightReport analyzeFlight(const logger::FlightLog& log, const mission::Scenario
       if (std::isfinite(w.settle_time)) w.max_error_after_settle = after_settle;
       previous_setpoint = w.to;
       report.setpoints.push_back(w);
-    } else if (e.kind == Event::kPull) {
+    } else if (e.kind == Event::kPull && !on_trajectory) {
       PullWindow p;
       p.label = e.label;
       p.start = e.t;
@@ -341,6 +357,27 @@ FlightReport analyzeFlight(const logger::FlightLog& log, const mission::Scenario
     report.processes.push_back(load);
   }
 
+  // Trajectory tracking, labelled by the scenario's trajectory events in order.
+  PathTrackingOptions path_options = options.path;
+  if (has("skip_radius")) path_options.skip_radius = criterion("skip_radius");
+  if (has("skip_window")) path_options.skip_window = criterion("skip_window");
+  if (has("path_return_error")) path_options.return_error = criterion("path_return_error");
+  if (has("thrust_limit_violations_max") &&
+      !(std::isfinite(path_options.thrust_min) && std::isfinite(path_options.thrust_max))) {
+    throw std::invalid_argument("criteria.thrust_limit_violations_max: needs the vehicle's thrust limits");
+  }
+  report.trajectories = analyzePathTracking(log, path_options);
+  {
+    std::vector<std::string> labels;
+    for (const mission::ScenarioEvent& s : scenario.events) {
+      if (s.kind == mission::ScenarioEvent::Kind::kTrajectory) labels.push_back(s.label);
+    }
+    for (size_t i = 0; i < report.trajectories.size(); ++i) {
+      PathTrackingReport& t = report.trajectories[i];
+      t.label = i < labels.size() && !labels[i].empty() ? labels[i] : "trajectory " + std::to_string(i + 1);
+    }
+  }
+
   // Checks: always no NaN and no crash; then every criterion the scenario names.
   addCheck(report, "nonfinite_messages", static_cast<double>(report.nonfinite), 0.0, true);
   addCheck(report, "crashed", report.crashed ? 1.0 : 0.0, 0.0, true);
@@ -379,6 +416,34 @@ FlightReport analyzeFlight(const logger::FlightLog& log, const mission::Scenario
   }
   if (has("rate_cmd_jitter_p99_ms")) {
     addCheck(report, "rate_cmd_jitter_p99_ms", report.rate_cmd_jitter_ms.p99, criterion("rate_cmd_jitter_p99_ms"), true);
+  }
+  const bool judges_trajectories = has("path_error_rms") || has("path_error_max") || has("skipped_samples_max") ||
+                                   has("skipped_samples_min") || has("path_return_time") ||
+                                   has("trajectory_laps_min") || has("trajectory_completed") ||
+                                   has("thrust_limit_violations_max");
+  if (judges_trajectories && report.trajectories.empty()) addCheck(report, "trajectories_tracked", 0.0, 1.0, false);
+  for (const PathTrackingReport& t : report.trajectories) {
+    const std::string tag = "[" + t.label + "]";
+    if (has("path_error_rms")) addCheck(report, "path_error_rms" + tag, t.path_error_rms, criterion("path_error_rms"), true);
+    if (has("path_error_max")) addCheck(report, "path_error_max" + tag, t.path_error_max, criterion("path_error_max"), true);
+    const double skipped = static_cast<double>(t.skipped.size());
+    if (has("skipped_samples_max")) addCheck(report, "skipped_samples_max" + tag, skipped, criterion("skipped_samples_max"), true);
+    if (has("skipped_samples_min")) addCheck(report, "skipped_samples_min" + tag, skipped, criterion("skipped_samples_min"), false);
+    if (has("trajectory_laps_min")) addCheck(report, "trajectory_laps_min" + tag, t.laps, criterion("trajectory_laps_min"), false);
+    if (has("trajectory_completed")) {
+      addCheck(report, "trajectory_completed" + tag, t.completed ? 1.0 : 0.0, criterion("trajectory_completed"), false);
+    }
+    if (has("thrust_limit_violations_max")) {
+      addCheck(report, "thrust_limit_violations_max" + tag, static_cast<double>(t.thrust_violations),
+               criterion("thrust_limit_violations_max"), true);
+    }
+    if (has("path_return_time")) {
+      if (t.pulls.empty()) addCheck(report, "path_return_time" + tag + "[no pull]", kNotReached, 0.0, true);
+      for (size_t i = 0; i < t.pulls.size(); ++i) {
+        addCheck(report, "path_return_time" + tag + "[pull " + std::to_string(i + 1) + "]", t.pulls[i].return_time,
+                 criterion("path_return_time"), true);
+      }
+    }
   }
   // CPU comes from the HEARTBEATs of a bus flight; an in-process flight has none to judge.
   if (has("stack_cpu_percent_max") && !report.processes.empty()) {

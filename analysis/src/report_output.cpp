@@ -76,6 +76,66 @@ void writeJson(const FlightReport& r, std::ostream& out) {
     json.endObject();
   }
   json.endArray();
+  json.key("trajectories");
+  json.beginArray();
+  for (const PathTrackingReport& t : r.trajectories) {
+    json.beginObject();
+    json.member("label", t.label);
+    json.memberInt("trajectory_seq", t.trajectory_seq);
+    json.member("tracking", t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial");
+    json.memberBool("closed", t.closed);
+    json.memberInt("samples", t.samples);
+    json.member("path_length_m", t.path_length);
+    json.member("duration_s", t.duration);
+    json.member("start_s", t.start);
+    json.member("end_s", t.end);
+    json.memberBool("completed", t.completed);
+    json.member("completion_time_s", t.completion_time);
+    json.member("remaining_m", t.remaining);
+    json.member("laps", t.laps);
+    json.memberInt("truth_samples", t.truth_samples);
+    json.member("path_error_rms_m", t.path_error_rms);
+    json.member("path_error_max_m", t.path_error_max);
+    writeVec3(json, "path_error_rms_axis_m", t.path_error_rms_axis);
+    writeVec3(json, "path_error_max_axis_m", t.path_error_max_axis);
+    json.member("time_error_rms_m", t.time_error_rms);
+    json.member("time_error_max_m", t.time_error_max);
+    json.memberInt("samples_passed", t.samples_passed);
+    json.memberInt("samples_skipped", static_cast<int64_t>(t.skipped.size()));
+    json.member("worst_visit_m", t.worst_visit);
+    json.key("skipped");
+    json.beginArray();
+    for (const SkippedSample& k : t.skipped) {
+      json.beginObject();
+      json.memberInt("lap", k.lap);
+      json.memberInt("index", k.index);
+      json.member("arc_m", k.arc);
+      json.member("closest_m", k.closest);
+      json.endObject();
+    }
+    json.endArray();
+    json.memberInt("commands", t.commands);
+    json.member("saturation_percent", t.saturation_percent);
+    json.member("rate_saturation_percent", t.rate_saturation_percent);
+    json.member("thrust_saturation_percent", t.thrust_saturation_percent);
+    json.member("thrust_min", t.thrust_min);
+    json.member("thrust_max", t.thrust_max);
+    json.memberInt("thrust_violations", t.thrust_violations);
+    json.key("pulls");
+    json.beginArray();
+    for (const PathPull& p : t.pulls) {
+      json.beginObject();
+      json.member("start_s", p.start);
+      json.member("release_s", p.release);
+      json.member("max_distance_m", p.max_distance);
+      json.member("distance_at_release_m", p.distance_at_release);
+      json.member("return_time_s", p.return_time);
+      json.endObject();
+    }
+    json.endArray();
+    json.endObject();
+  }
+  json.endArray();
   json.key("estimator");
   json.beginObject();
   json.memberInt("hover_samples", r.estimator.samples);
@@ -135,7 +195,7 @@ void writeJson(const FlightReport& r, std::ostream& out) {
 void writeSummary(const FlightReport& r, std::ostream& out) {
   int passed = 0;
   for (const Check& c : r.checks) passed += c.pass ? 1 : 0;
-  char line[256];
+  char line[512];
   std::snprintf(line, sizeof line, "scenario %s: %s (%d of %zu checks pass)\n", r.scenario.c_str(),
                 r.passed() ? "PASS" : "FAIL", passed, r.checks.size());
   out << line;
@@ -153,6 +213,31 @@ void writeSummary(const FlightReport& r, std::ostream& out) {
                   p.label.c_str(), p.force.norm(), p.release - p.start, p.max_deviation,
                   format("%.2f s", p.return_time).c_str());
     out << line;
+  }
+  for (const PathTrackingReport& t : r.trajectories) {
+    std::snprintf(line, sizeof line, "  %s (%s, %s, %d samples, %.2f m per lap): %s, %.2f laps\n", t.label.c_str(),
+                  t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial", t.closed ? "closed" : "open",
+                  t.samples, t.path_length,
+                  t.completed ? format("completed in %.2f s", t.completion_time).c_str()
+                              : format("not completed (%.2f m left)", t.remaining).c_str(),
+                  t.laps);
+    out << line;
+    std::snprintf(line, sizeof line,
+                  "    path error RMS %.3f m (x %.3f y %.3f z %.3f), max %.3f m; time-indexed RMS %.3f m, max %.3f m\n",
+                  t.path_error_rms, t.path_error_rms_axis[0], t.path_error_rms_axis[1], t.path_error_rms_axis[2],
+                  t.path_error_max, t.time_error_rms, t.time_error_max);
+    out << line;
+    std::snprintf(line, sizeof line,
+                  "    samples passed %d, skipped %zu (worst visited %.2f m); saturation %.1f %% (rate %.1f %%, thrust "
+                  "%.1f %%), thrust %.2f..%.2f m/s^2, %lld outside limits\n",
+                  t.samples_passed, t.skipped.size(), t.worst_visit, t.saturation_percent, t.rate_saturation_percent,
+                  t.thrust_saturation_percent, t.thrust_min, t.thrust_max, static_cast<long long>(t.thrust_violations));
+    out << line;
+    for (const PathPull& p : t.pulls) {
+      std::snprintf(line, sizeof line, "    pull at %.2f s for %.2f s: %.2f m off the path at release, back on it after %s\n",
+                    p.start, p.release - p.start, p.distance_at_release, format("%.2f s", p.return_time).c_str());
+      out << line;
+    }
   }
   std::snprintf(line, sizeof line, "  estimator (hover): position %s RMS, attitude %s RMS (whole flight %s, %s)\n",
                 format("%.2f cm", 100.0 * r.estimator.position_rms).c_str(),

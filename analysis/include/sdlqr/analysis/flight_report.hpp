@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "sdlqr/analysis/path_tracking.hpp"
 #include "sdlqr/common/types.hpp"
 #include "sdlqr/logger/flight_log.hpp"
 #include "sdlqr/logger/statistics.hpp"
@@ -79,6 +80,7 @@ struct FlightReport {
   double flight_end = kNotReached;
   std::vector<SetpointWindow> setpoints;
   std::vector<PullWindow> pulls;
+  std::vector<PathTrackingReport> trajectories;  // one per tracked TRAJECTORY upload
   EstimatorAccuracy estimator;
   double imu_rate_hz = 0.0;        // by simulation time
   double state_est_rate_hz = 0.0;
@@ -105,6 +107,10 @@ struct AnalysisOptions {
   double return_error = 0.10;  // [m]
   double hover_window = 1.5;   // [s]
   double rate_cmd_period_s = 0.01;
+  // skip_radius, skip_window and return_error are overridden by the scenario's criteria of the
+  // same names (return_error: path_return_error); thrust limits come from the vehicle's lqr:
+  // section and are required by the criterion thrust_limit_violations_max.
+  PathTrackingOptions path;
 };
 
 // Throws std::invalid_argument for a criterion key it does not know (a typo would otherwise pass).
