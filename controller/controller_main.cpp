@@ -1,12 +1,15 @@
 // sdlqr-controller: wires the bus to the 100 Hz state-dependent LQR (controller/ library).
 
+#include <algorithm>
 #include <iostream>
 
 #include "sdlqr/common/cli.hpp"
 #include "sdlqr/common/validate.hpp"
+#include "sdlqr/common/watchdog.hpp"
 #include "sdlqr/controller/state_dependent_lqr.hpp"
 #include "sdlqr/node/convert.hpp"
 #include "sdlqr/node/node.hpp"
+#include "sdlqr/node/watchdog_report.hpp"
 
 using namespace sdlqr;
 
@@ -24,6 +27,7 @@ int main(int argc, char** argv) {
     const ConfigReader config = loadVehicleConfig(options.config_path);
     const LqrParams lqr = LqrParams::load(config.child("lqr"));
     const controller::ControllerParams params = controller::ControllerParams::load(config.child("controller"));
+    const FaultParams faults = FaultParams::load(config.child("faults"));
     controller::StateDependentLqr lqr_controller(lqr, params);
 
     node::Node bus("sdlqr-controller", options);
@@ -37,22 +41,29 @@ int main(int argc, char** argv) {
     const auto stale_id = bus.counters().add("controller.stale_ticks");
     const auto saturated_id = bus.counters().add("controller.saturated_ticks");
     const auto trajectory_refused_id = bus.counters().add("reject.trajectory_refused");
+    // GAINS age is judged in simulation time by the library (stale, then the hover K); the
+    // STATE_EST watchdog runs on wall time, since a silent estimator brings no time at all.
+    const auto gains_freshness_id = bus.counters().add("watchdog.gains.freshness");  // 0 fresh, 1 stale, 2 fallback
+    Watchdog state_watchdog(faults.controller_state_timeout_s);
+    node::WatchdogReport state_report(bus.counters(), "state_est");
     // Counts a rejection; true when the message must be dropped.
     auto reject = [&](RejectReason reason) {
       if (reason == RejectReason::kNone) return false;
       bus.countRejected(reject_ids[static_cast<int>(reason)]);
       return true;
     };
-    TimeGate state_time, gains_time;
+    ClockGate state_time(static_cast<int64_t>(faults.state_max_jump_s * 1e6), faults.state_jump_confirmations);
+    TimeGate gains_time;
+    OrderGate command_order, params_order;
     int64_t now_utime = -1;
 
     controller::StateDependentLqr::Tick tick;
     bus.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t& msg) {
       const StateEstimate estimate = node::fromLcm(msg);
       RejectReason reason = validate(estimate, limits);
-      if (reason == RejectReason::kNone) reason = state_time.check(estimate.utime, -1);
+      if (reason == RejectReason::kNone) reason = state_time.offer(estimate.utime);
       if (reject(reason)) return;
-      state_time.accept(estimate.utime);
+      state_watchdog.feed(node::monotonicSeconds());
       now_utime = estimate.utime;
       bus.setSimTime(now_utime);
       if (!lqr_controller.onStateEstimate(estimate, tick)) return;
@@ -60,6 +71,7 @@ int main(int argc, char** argv) {
       bus.publish(channel::kReference, node::toLcm(tick.reference));
       const controller::ControllerStatus& status = lqr_controller.status();
       bus.counters().increment(ticks_id);
+      bus.counters().set(gains_freshness_id, static_cast<int64_t>(status.gains));
       if (status.gains == GainsFreshness::kFallback) bus.counters().increment(fallback_id);
       if (status.gains == GainsFreshness::kStale) bus.counters().increment(stale_id);
       if (tick.command.saturated) bus.counters().increment(saturated_id);
@@ -70,13 +82,17 @@ int main(int argc, char** argv) {
       const GainSet gains = node::fromLcm(msg);
       RejectReason reason = validate(gains, limits);
       if (reason == RejectReason::kNone) reason = gains_time.check(gains.utime, now_utime);
+      // Last: the eigenvalues cost ~10 us, spent only on a K that passed the cheap checks.
+      if (reason == RejectReason::kNone) reason = validateClosedLoop(gains);
       if (reject(reason)) return;
       gains_time.accept(gains.utime);
       lqr_controller.setGains(gains);
     }, 4);
     bus.subscribe<command_t>(channel::kCommand, [&](const command_t& msg) {
       const Command command = node::fromLcm(msg);
-      if (reject(validate(command, limits))) return;
+      RejectReason reason = validate(command, limits);
+      if (reason == RejectReason::kNone) reason = command_order.offer(command.utime, command.seq, now_utime);
+      if (reject(reason)) return;
       lqr_controller.handleCommand(command);
     }, 16);
     bus.subscribe<trajectory_t>(channel::kTrajectory, [&](const trajectory_t& msg) {
@@ -90,12 +106,22 @@ int main(int argc, char** argv) {
     }, 2);
     bus.subscribe<params_t>(channel::kParams, [&](const params_t& msg) {
       const ParamsUpdate update = node::fromLcm(msg);
-      if (reject(validate(update, limits))) return;
+      RejectReason reason = validate(update, limits);
+      if (reason == RejectReason::kNone) reason = params_order.offer(update.utime, update.seq, now_utime);
+      if (reject(reason)) return;
       lqr_controller.applyParams(update);
     }, 16);
 
     std::cerr << "sdlqr-controller: running on " << bus.channel(channel::kStateEstimate) << "\n";
-    while (bus.spin(100)) {
+    // Short spins: the watchdog must notice a silent estimator within its timeout.
+    const int spin_ms = std::max(1, static_cast<int>(faults.controller_state_timeout_s * 1e3 / 4));
+    while (bus.spin(spin_ms)) {
+      const double now = node::monotonicSeconds();
+      if (state_watchdog.check(now)) {
+        // No estimate: nothing is commanded (the lowlevel's RATE_CMD timeout takes over).
+        bus.setState(node::ProcessState::kFailsafe);
+      }
+      state_report.update(state_watchdog, now);
     }
     bus.shutdown();
     return 0;

@@ -11,17 +11,20 @@
 #include "sdlqr/common/lqr.hpp"
 #include "sdlqr/common/params.hpp"
 #include "sdlqr/common/validate.hpp"
+#include "sdlqr/common/watchdog.hpp"
 #include "sdlqr/controller/gain_scheduler.hpp"
 #include "sdlqr/controller/gains_cli.hpp"
 #include "sdlqr/controller/gains_params.hpp"
 #include "sdlqr/node/convert.hpp"
 #include "sdlqr/node/node.hpp"
+#include "sdlqr/node/watchdog_report.hpp"
 
 namespace {
 
 using namespace sdlqr;
 
-int runOnBus(const ProcessOptions& options, const LqrParams& lqr, const controller::GainsParams& params) {
+int runOnBus(const ProcessOptions& options, const LqrParams& lqr, const controller::GainsParams& params,
+             const FaultParams& faults) {
   controller::GainScheduler scheduler(lqr, params.rate_hz);
   node::Node bus("sdlqr-gains", options);
   const ValidationLimits limits;
@@ -37,20 +40,18 @@ int runOnBus(const ProcessOptions& options, const LqrParams& lqr, const controll
     bus.countRejected(reject_ids[static_cast<int>(reason)]);
     return true;
   };
-  TimeGate state_time;
-  auto last_state_wall = std::chrono::steady_clock::now();
-  bool have_state = false;
+  ClockGate state_time(static_cast<int64_t>(faults.state_max_jump_s * 1e6), faults.state_jump_confirmations);
+  Watchdog state_watchdog(params.state_timeout_s);
+  node::WatchdogReport state_report(bus.counters(), "state_est");
 
   GainSet gains;
   bus.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t& msg) {
     const StateEstimate estimate = node::fromLcm(msg);
     RejectReason reason = validate(estimate, limits);
-    if (reason == RejectReason::kNone) reason = state_time.check(estimate.utime, -1);
+    if (reason == RejectReason::kNone) reason = state_time.offer(estimate.utime);
     if (reject(reason)) return;
-    state_time.accept(estimate.utime);
     bus.setSimTime(estimate.utime);
-    last_state_wall = std::chrono::steady_clock::now();
-    have_state = true;
+    state_watchdog.feed(node::monotonicSeconds());
     if (estimate.status == EstimatorStatus::kInitializing || !scheduler.due(estimate)) return;
     const auto start = std::chrono::steady_clock::now();
     const SolveStatus status = scheduler.solve(estimate, gains);
@@ -82,11 +83,13 @@ int runOnBus(const ProcessOptions& options, const LqrParams& lqr, const controll
 
   std::cerr << "sdlqr-gains: solving at " << params.rate_hz << " Hz on " << bus.channel(channel::kStateEstimate)
             << " (" << toString(lqr.method) << " method)\n";
-  while (bus.spin(100)) {
-    const double silent = std::chrono::duration<double>(std::chrono::steady_clock::now() - last_state_wall).count();
-    bus.setState(!have_state ? node::ProcessState::kStarting
-                 : silent > params.state_timeout_s ? node::ProcessState::kDegraded
-                                                   : node::ProcessState::kRunning);
+  while (bus.spin(20)) {
+    const double now = node::monotonicSeconds();
+    const bool silent = state_watchdog.check(now);
+    bus.setState(!state_watchdog.started() ? node::ProcessState::kStarting
+                 : silent                  ? node::ProcessState::kDegraded
+                                           : node::ProcessState::kRunning);
+    state_report.update(state_watchdog, now);
   }
   bus.shutdown();
   return 0;
@@ -119,7 +122,8 @@ int main(int argc, char** argv) {
     }
     if (!once) {
       if (!state_text.empty() || !input_text.empty()) throw std::invalid_argument("--state and --input need --once");
-      return runOnBus(options, params, controller::GainsParams::load(config.child("gains")));
+      return runOnBus(options, params, controller::GainsParams::load(config.child("gains")),
+                      FaultParams::load(config.child("faults")));
     }
     if (state_text.empty() || input_text.empty()) throw std::invalid_argument("--once needs --state and --input");
 

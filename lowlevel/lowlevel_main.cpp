@@ -1,17 +1,21 @@
 // sdlqr-lowlevel: wires the bus to the 1 kHz bodyrate loop (lowlevel/ library). One MOTOR_CMD
 // per accepted IMU sample; RATE_CMD, COMMAND and PARAMS only update the loop's inputs.
 
+#include <algorithm>
 #include <array>
 #include <string>
 
 #include "sdlqr/common/cli.hpp"
 #include "sdlqr/common/config.hpp"
 #include "sdlqr/common/params.hpp"
+#include "sdlqr/common/validate.hpp"
+#include "sdlqr/common/watchdog.hpp"
 #include "sdlqr/common/vehicle.hpp"
 #include "sdlqr/lowlevel/bodyrate_loop.hpp"
 #include "sdlqr/lowlevel/param_check.hpp"
 #include "sdlqr/node/convert.hpp"
 #include "sdlqr/node/node.hpp"
+#include "sdlqr/node/watchdog_report.hpp"
 
 using namespace sdlqr;
 
@@ -44,6 +48,7 @@ int main(int argc, char** argv) {
     const lowlevel::LowlevelParams params = lowlevel::LowlevelParams::load(lowlevel_config);
     lowlevel::throwIfInvalid(lowlevel_config, params.invalidReasonFor(vehicle, gravity));
     lowlevel::BodyrateLoop loop(vehicle, params, gravity);
+    const FaultParams faults = FaultParams::load(config.child("faults"));
 
     node::Node bus("sdlqr-lowlevel", options);
     node::Counters& counters = bus.counters();
@@ -56,8 +61,22 @@ int main(int argc, char** argv) {
       rate_reject_ids[i] =
           counters.add(std::string("reject.rate_cmd.") + toString(static_cast<lowlevel::RateCommandReject>(i)));
     }
-    const auto command_reject_id = counters.add("reject.command.unknown");
+    const auto command_reject_id = counters.add("reject.command.invalid");
+    const auto command_replay_id = counters.add("reject.command.time_backwards");
+    const auto command_future_id = counters.add("reject.command.time_future");
+    const auto params_reject_id = counters.add("reject.params.invalid");
     const auto mass_reject_id = counters.add("reject.params.mass");
+    // IMU age on wall time (a silent simulator brings no IMU time); RATE_CMD age is judged by the
+    // loop in IMU time (lowlevel.rate_cmd_timeout, the failsafe) and mirrored here on wall time.
+    Watchdog imu_watchdog(faults.lowlevel_imu_timeout_s);
+    Watchdog rate_watchdog(params.rate_cmd_timeout);
+    node::WatchdogReport imu_report(counters, "imu");
+    node::WatchdogReport rate_report(counters, "rate_cmd");
+    const ValidationLimits limits;
+    // COMMAND and PARAMS are rare and each one changes the flight: a replayed old one (same or
+    // older utime and seq) or one from the future is refused.
+    OrderGate command_order, params_order;
+    int64_t imu_utime = -1;
     const lowlevel::LowlevelCounters& loop_counters = loop.counters();
     std::array<EventCounter, 8> events{{
         {counters.add("imu.resyncs"), &loop_counters.imu_resyncs},
@@ -78,6 +97,8 @@ int main(int argc, char** argv) {
         bus.countRejected(imu_reject_ids[static_cast<size_t>(reason)]);
         return;
       }
+      imu_watchdog.feed(node::monotonicSeconds());
+      imu_utime = command.utime;
       motor_msg = node::toLcm(command);
       bus.publish(channel::kMotorCommand, motor_msg);
       bus.setSimTime(command.utime);
@@ -91,22 +112,43 @@ int main(int argc, char** argv) {
     }, 64);
     bus.subscribe<rate_cmd_t>(channel::kRateCommand, [&](const rate_cmd_t& msg) {
       const lowlevel::RateCommandReject reason = loop.setRateCommand(node::fromLcm(msg));
-      if (reason != lowlevel::RateCommandReject::kNone) bus.countRejected(rate_reject_ids[static_cast<size_t>(reason)]);
+      if (reason != lowlevel::RateCommandReject::kNone) {
+        bus.countRejected(rate_reject_ids[static_cast<size_t>(reason)]);
+        return;
+      }
+      rate_watchdog.feed(node::monotonicSeconds());
     }, 1);
     bus.subscribe<command_t>(channel::kCommand, [&](const command_t& msg) {
       const Command command = node::fromLcm(msg);
-      if (command.command < CommandType::kArm || command.command > CommandType::kLand) {
+      if (validate(command, limits) != RejectReason::kNone) {
         bus.countRejected(command_reject_id);
+        return;
+      }
+      const RejectReason order = command_order.offer(command.utime, command.seq, imu_utime);
+      if (order != RejectReason::kNone) {
+        bus.countRejected(order == RejectReason::kTimeBackwards ? command_replay_id : command_future_id);
         return;
       }
       loop.handleCommand(command);  // a refused arm is counted by the loop ("arm.refused")
     }, 16);
     bus.subscribe<params_t>(channel::kParams, [&](const params_t& msg) {
       const ParamsUpdate update = node::fromLcm(msg);
+      if (validate(update, limits) != RejectReason::kNone ||
+          params_order.offer(update.utime, update.seq, imu_utime) != RejectReason::kNone) {
+        bus.countRejected(params_reject_id);
+        return;
+      }
       if ((update.field_mask & ParamsUpdate::kMass) != 0 && !loop.setMass(update.mass)) bus.countRejected(mass_reject_id);
     }, 16);
 
-    while (bus.spin(100)) {
+    const int spin_ms = std::max(1, static_cast<int>(faults.lowlevel_imu_timeout_s * 1e3 / 4));
+    while (bus.spin(spin_ms)) {
+      const double now = node::monotonicSeconds();
+      // Without IMU samples nothing can be computed or sent: the state says so.
+      if (imu_watchdog.check(now)) bus.setState(node::ProcessState::kFailsafe);
+      rate_watchdog.check(now);
+      imu_report.update(imu_watchdog, now);
+      rate_report.update(rate_watchdog, now);
     }
     bus.shutdown();
     return 0;

@@ -12,6 +12,7 @@
 
 #include "sdlqr/common/cli.hpp"
 #include "sdlqr/common/config.hpp"
+#include "sdlqr/common/validate.hpp"
 #include "sdlqr/node/convert.hpp"
 #include "sdlqr/node/node.hpp"
 #include "sdlqr/sim/simulator.hpp"
@@ -94,13 +95,30 @@ int run(int argc, char** argv) {
   }
   const node::Counters::Id disturbances_accepted = counters.add("disturbance.accepted");
   const node::Counters::Id crashes = counters.add("sim.crash");
+  // Replayed or forged times: a motor command older than the last applied one, or stamped ahead
+  // of the simulation clock, is not the lowlevel's answer to the current IMU sample.
+  const node::Counters::Id motor_backwards = counters.add("reject.motor_cmd.time_backwards");
+  const node::Counters::Id motor_future = counters.add("reject.motor_cmd.time_future");
+  const node::Counters::Id disturbance_order = counters.add("reject.disturbance.order");
+  TimeGate motor_time(0);
+  OrderGate disturbance_gate;
 
   node.subscribe<motor_cmd_t>(channel::kMotorCommand, [&](const motor_cmd_t& m) {
+    const RejectReason time = motor_time.check(m.utime, simulator.utime());
+    if (time != RejectReason::kNone) {
+      node.countRejected(time == RejectReason::kTimeBackwards ? motor_backwards : motor_future);
+      return;
+    }
+    motor_time.accept(m.utime);
     const sim::MotorCommandFault fault = simulator.setMotorCommand(node::fromLcm(m));
     if (fault != sim::MotorCommandFault::kNone) node.countRejected(motor_reject[static_cast<size_t>(fault)]);
   }, 1);
   // Every disturbance request matters, so they queue rather than replace each other.
   node.subscribe<disturbance_t>(channel::kDisturbance, [&](const disturbance_t& m) {
+    if (disturbance_gate.offer(m.utime, m.seq, simulator.utime()) != RejectReason::kNone) {
+      node.countRejected(disturbance_order);
+      return;
+    }
     const sim::DisturbanceFault fault = simulator.addDisturbance(node::fromLcm(m));
     if (fault == sim::DisturbanceFault::kNone) {
       counters.increment(disturbances_accepted);

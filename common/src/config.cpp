@@ -24,7 +24,8 @@ YAML::Node loadYamlFile(const std::string& path) {
 ConfigReader loadVehicleConfig(const std::string& path) {
   if (path.empty()) return ConfigReader(YAML::Node(YAML::NodeType::Map), "");
   ConfigReader root(loadYamlFile(path), "");
-  root.allowOnly({"vehicle", "lqr", "sim", "estimator", "lowlevel", "controller", "gains", "logger", "mission", "trajectory"});
+  root.allowOnly({"vehicle", "lqr", "sim", "estimator", "lowlevel", "controller", "gains", "logger", "mission", "trajectory",
+                 "faults"});
   return root;
 }
 

@@ -38,6 +38,7 @@ const char* counterName(RejectReason reason) {
     case RejectReason::kBadStatus: return "reject.status";
     case RejectReason::kTimeBackwards: return "reject.time_backwards";
     case RejectReason::kTimeFuture: return "reject.time_future";
+    case RejectReason::kUnstable: return "reject.unstable";
     case RejectReason::kCount: break;
   }
   return "reject.unknown";
@@ -149,6 +150,23 @@ RejectReason validate(const Trajectory& m, const ValidationLimits& limits) {
     }
     previous_t = s.t;
   }
+  return RejectReason::kNone;
+}
+
+RejectReason ClockGate::offer(int64_t utime) {
+  if (last_utime_ >= 0 && utime <= last_utime_) return RejectReason::kTimeBackwards;
+  if (last_utime_ < 0 || utime - last_utime_ <= max_jump_us_) {
+    last_utime_ = utime;
+    candidate_count_ = 0;
+    return RejectReason::kNone;
+  }
+  const bool continues_candidate =
+      candidate_count_ > 0 && utime > candidate_utime_ && utime - candidate_utime_ <= max_jump_us_;
+  candidate_count_ = continues_candidate ? candidate_count_ + 1 : 1;
+  candidate_utime_ = utime;
+  if (candidate_count_ < confirmations_) return RejectReason::kTimeFuture;
+  last_utime_ = utime;
+  candidate_count_ = 0;
   return RejectReason::kNone;
 }
 

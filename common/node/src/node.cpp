@@ -3,12 +3,18 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cmath>
 #include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
 #include <stdexcept>
 
 #include "sdlqr/heartbeat_t.hpp"
+#include "sdlqr/node/watchdog_report.hpp"
 
 namespace sdlqr::node {
 
@@ -25,7 +31,57 @@ double processCpuSeconds() {
          1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
+double parseNumber(const std::string& field, const std::string& text) {
+  size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value)) {
+    throw std::invalid_argument("SDLQR_FAULTS: " + field + ": expected a number, got '" + text + "'");
+  }
+  return value;
+}
+
 }  // namespace
+
+FaultInjection FaultInjection::parse(const std::string& spec) {
+  FaultInjection f;
+  size_t start = 0;
+  while (start < spec.size()) {
+    size_t end = spec.find(',', start);
+    if (end == std::string::npos) end = spec.size();
+    const std::string item = spec.substr(start, end - start);
+    start = end + 1;
+    if (item.empty()) continue;
+    const size_t eq = item.find('=');
+    if (eq == std::string::npos) throw std::invalid_argument("SDLQR_FAULTS: '" + item + "': expected key=value");
+    const std::string key = item.substr(0, eq);
+    const std::string value = item.substr(eq + 1);
+    if (key == "drop") {
+      f.drop = parseNumber(key, value);
+      if (f.drop < 0.0 || f.drop >= 1.0) throw std::invalid_argument("SDLQR_FAULTS: drop: must be in [0, 1)");
+    } else if (key == "delay_ms") {
+      const size_t colon = value.find(':');
+      f.delay_min_ms = parseNumber(key, value.substr(0, colon));
+      f.delay_max_ms = colon == std::string::npos ? f.delay_min_ms : parseNumber(key, value.substr(colon + 1));
+      if (f.delay_min_ms < 0.0 || f.delay_max_ms < f.delay_min_ms || f.delay_max_ms > 10000.0) {
+        throw std::invalid_argument("SDLQR_FAULTS: delay_ms: expected MIN:MAX with 0 <= MIN <= MAX <= 10000");
+      }
+    } else if (key == "seed") {
+      const double seed = parseNumber(key, value);
+      if (seed < 0.0 || seed != std::floor(seed) || seed > 9e15) {
+        throw std::invalid_argument("SDLQR_FAULTS: seed: expected a non-negative integer");
+      }
+      f.seed = static_cast<uint64_t>(seed);
+    } else {
+      throw std::invalid_argument("SDLQR_FAULTS: unknown key '" + key + "' (drop, delay_ms, seed)");
+    }
+  }
+  return f;
+}
 
 Counters::Id Counters::add(const std::string& name) {
   for (size_t i = 0; i < names_.size(); ++i) {
@@ -49,6 +105,10 @@ Node::Node(std::string process, const ProcessOptions& options)
                              "' (is multicast routed? see README, Troubleshooting)");
   }
   reject_decode_ = counters_.add("reject.decode");
+  reject_size_ = counters_.add("reject.size");
+  if (const char* spec = std::getenv("SDLQR_FAULTS"); spec != nullptr && spec[0] != '\0') {
+    setFaultInjection(FaultInjection::parse(spec));
+  }
   struct sigaction action {};
   action.sa_handler = onStopSignal;
   sigemptyset(&action.sa_mask);
@@ -63,7 +123,79 @@ Node::Node(std::string process, const ProcessOptions& options)
 Node::~Node() = default;
 
 void Node::dispatch(const lcm_recv_buf_t* rbuf, const char*, void* sub) {
-  static_cast<SubscriptionBase*>(sub)->onMessage(rbuf->data, rbuf->data_size);
+  auto* subscription = static_cast<SubscriptionBase*>(sub);
+  if (subscription->node->faults_.enabled()) {
+    subscription->node->injectFault(*subscription, rbuf->data, rbuf->data_size);
+    return;
+  }
+  subscription->onMessage(rbuf->data, rbuf->data_size);
+}
+
+void Node::setFaultInjection(const FaultInjection& faults) {
+  faults_ = faults;
+  // Each process draws its own sequence from the common seed.
+  fault_rng_.seed(faults.seed ^ std::hash<std::string>{}(process_));
+  if (faults.enabled() && fault_dropped_ < 0) {
+    fault_dropped_ = counters_.add("fault.dropped");
+    fault_delayed_ = counters_.add("fault.delayed");
+  }
+}
+
+void Node::injectFault(SubscriptionBase& sub, const void* data, uint32_t size) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  if (faults_.drop > 0.0 && uniform(fault_rng_) < faults_.drop) {
+    ++received_;
+    counters_.increment(fault_dropped_);
+    return;
+  }
+  const double delay_ms = faults_.delay_min_ms + (faults_.delay_max_ms - faults_.delay_min_ms) * uniform(fault_rng_);
+  const auto now = std::chrono::steady_clock::now();
+  auto due = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                       std::chrono::duration<double, std::milli>(delay_ms));
+  due = std::max(due, sub.last_due);
+  if (due <= now) {
+    sub.onMessage(data, size);
+    return;
+  }
+  sub.last_due = due;
+  counters_.increment(fault_delayed_);
+  DelayedMessage message;
+  message.sub = &sub;
+  message.due = due;
+  if (!spare_buffers_.empty()) {
+    message.bytes = std::move(spare_buffers_.back());
+    spare_buffers_.pop_back();
+  }
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  message.bytes.assign(bytes, bytes + size);
+  delayed_.push_back(std::move(message));
+}
+
+void Node::deliverDueMessages() {
+  if (delayed_.empty()) return;
+  const auto now = std::chrono::steady_clock::now();
+  // Insertion order is due order within each channel; channels do not wait for each other.
+  size_t kept = 0;
+  for (size_t i = 0; i < delayed_.size(); ++i) {
+    DelayedMessage& message = delayed_[i];
+    if (message.due <= now) {
+      message.sub->onMessage(message.bytes.data(), static_cast<uint32_t>(message.bytes.size()));
+      spare_buffers_.push_back(std::move(message.bytes));
+    } else {
+      if (kept != i) delayed_[kept] = std::move(message);
+      ++kept;
+    }
+  }
+  delayed_.resize(kept);
+}
+
+int Node::millisecondsToNextDue(int timeout_ms) const {
+  if (delayed_.empty()) return timeout_ms;
+  auto earliest = delayed_.front().due;
+  for (const DelayedMessage& message : delayed_) earliest = std::min(earliest, message.due);
+  const double wait_ms = std::chrono::duration<double, std::milli>(earliest - std::chrono::steady_clock::now()).count();
+  const int wait = std::max(0, static_cast<int>(std::ceil(wait_ms)));
+  return timeout_ms < 0 ? wait : std::min(timeout_ms, wait);
 }
 
 const std::string& Node::publishChannel(std::string_view base) {
@@ -121,11 +253,12 @@ bool Node::running() const { return !g_stop_requested.load(); }
 
 bool Node::spin(int timeout_ms) {
   if (!running()) return false;
-  const int status = lcm_->handleTimeout(timeout_ms);
+  const int status = lcm_->handleTimeout(millisecondsToNextDue(timeout_ms));
   if (status < 0 && running()) {
     countError();
     setLastError("LCM handle failed");
   }
+  deliverDueMessages();
   if (std::chrono::steady_clock::now() >= next_heartbeat_) publishHeartbeat();
   return running();
 }
@@ -164,6 +297,14 @@ void Node::publishHeartbeat() {
   hb.counter_values = counters_.values();
   hb.last_error = last_error_;
   publish(channel::kHeartbeat, hb);
+}
+
+}  // namespace sdlqr::node
+
+namespace sdlqr::node {
+
+double monotonicSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 }  // namespace sdlqr::node

@@ -17,6 +17,7 @@ enum class RejectReason {
   kBadStatus,       // a result that says it failed (e.g. GAINS status != OK)
   kTimeBackwards,   // utime older than the newest accepted on the channel
   kTimeFuture,      // utime beyond the newest known simulation time plus a tolerance
+  kUnstable,        // a gain whose closed loop the receiver's own check finds not Schur stable
   kCount
 };
 
@@ -41,6 +42,14 @@ RejectReason validate(const Command& m, const ValidationLimits& limits);
 RejectReason validate(const ParamsUpdate& m, const ValidationLimits& limits);
 RejectReason validate(const Trajectory& m, const ValidationLimits& limits);
 
+// The receiver's own stability check of a GAINS message that passed validate(): the model
+// linearized at (x_lin, u_lin), discretized at dt, reduced to the 9-state tangent system, closed
+// with K; kUnstable unless every eigenvalue lies inside the circle of radius max_spectral_radius.
+// A rogue or corrupted K with finite, in-range entries is caught here. No heap allocation.
+RejectReason validateClosedLoop(const GainSet& m, double max_spectral_radius = 0.9999);
+// Spectral radius of that tangent closed loop (NaN when it cannot be formed), for tests and logs.
+double closedLoopSpectralRadius(const GainSet& m);
+
 // Rejects utimes that go backwards on one channel, and (when a clock is known) that lie further
 // than `future_tolerance_us` ahead of the newest simulation time seen by the process.
 class TimeGate {
@@ -57,6 +66,46 @@ class TimeGate {
  private:
   int64_t future_tolerance_us_;
   int64_t last_utime_ = -1;
+};
+
+// For rare messages that each change the flight (COMMAND, PARAMS): one not after the last accepted
+// in (utime, seq) order is a replay (kTimeBackwards); one whose utime lies more than
+// future_tolerance_us ahead of the process's clock (when known, >= 0) is kTimeFuture.
+class OrderGate {
+ public:
+  explicit OrderGate(int64_t future_tolerance_us = 1'000'000) : future_tolerance_us_(future_tolerance_us) {}
+  RejectReason offer(int64_t utime, int64_t seq, int64_t now_utime) {
+    if (utime < last_utime_ || (utime == last_utime_ && seq <= last_seq_)) return RejectReason::kTimeBackwards;
+    if (now_utime >= 0 && utime > now_utime + future_tolerance_us_) return RejectReason::kTimeFuture;
+    last_utime_ = utime;
+    last_seq_ = seq;
+    return RejectReason::kNone;
+  }
+
+ private:
+  int64_t future_tolerance_us_;
+  int64_t last_utime_ = -1;
+  int64_t last_seq_ = -1;
+};
+
+// For the stream that is a process's clock (STATE_EST in the controller and the gain solver): a
+// utime not after the newest accepted is kTimeBackwards; a forward jump beyond max_jump_us is
+// kTimeFuture until `confirmations` messages in a row, each newer than the one before and within
+// max_jump_us of it, agree on the new time (a restarted estimator after a long gap). One forged
+// far-future message therefore cannot move the clock and lock out the real stream.
+class ClockGate {
+ public:
+  ClockGate(int64_t max_jump_us = 500'000, int confirmations = 5)
+      : max_jump_us_(max_jump_us), confirmations_(confirmations) {}
+  RejectReason offer(int64_t utime);
+  int64_t now() const { return last_utime_; }  // -1 before the first accepted message
+
+ private:
+  int64_t max_jump_us_;
+  int confirmations_;
+  int64_t last_utime_ = -1;
+  int64_t candidate_utime_ = -1;
+  int candidate_count_ = 0;
 };
 
 }  // namespace sdlqr

@@ -2,6 +2,10 @@
 // The LCM side of every process: one bus connection, vehicle-prefixed channels, decoding with
 // reject counting, sequence-gap (drop) counting, queue capacity 1 for state and command
 // channels, HEARTBEAT once a second of wall time, and a stop flag set by SIGINT/SIGTERM.
+// Before decoding, every message's bytes are checked to hold exactly one complete encoding
+// (logger's generated, allocation-free walk), so a forged array length cannot allocate.
+// Optional seeded fault injection (drop, delay) on received messages, for tests: see
+// FaultInjection, enabled by the SDLQR_FAULTS environment variable or setFaultInjection().
 // Algorithm code never sees this header; mains hand plain structs (common/messages.hpp) on.
 
 #include <lcm/lcm-cpp.hpp>
@@ -10,6 +14,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <random>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +32,8 @@ class Counters {
   using Id = int;
   Id add(const std::string& name);
   void increment(Id id, int64_t by = 1) { values_[static_cast<size_t>(id)] += by; }
+  // For gauges (a watchdog's age, an expired flag).
+  void set(Id id, int64_t value) { values_[static_cast<size_t>(id)] = value; }
   int64_t value(Id id) const { return values_[static_cast<size_t>(id)]; }
   const std::vector<std::string>& names() const { return names_; }
   const std::vector<int64_t>& values() const { return values_; }
@@ -34,6 +41,26 @@ class Counters {
  private:
   std::vector<std::string> names_;
   std::vector<int64_t> values_;
+};
+
+// The bytes hold exactly one complete encoding of T (walked without allocating); defined for
+// every type of lcmtypes/ in wire_fits.cpp.
+template <class T>
+bool encodingFits(const uint8_t* data, int64_t size);
+
+// Seeded loss and latency on every typed subscription of a process (the kernel here has no
+// netem). Spec text: "drop=0.1,delay_ms=0:5,seed=7" (any subset, comma-separated). Each received
+// message is dropped with probability `drop`, else delivered after a delay drawn uniformly from
+// [delay_min_ms, delay_max_ms]; a channel's messages keep their order (the delay is a queue's).
+// Raw (recorder) subscriptions are never faulted: the log shows what was sent.
+struct FaultInjection {
+  double drop = 0.0;           // [-] probability in [0, 1)
+  double delay_min_ms = 0.0;   // [ms]
+  double delay_max_ms = 0.0;   // [ms]
+  uint64_t seed = 1;
+  bool enabled() const { return drop > 0.0 || delay_max_ms > 0.0; }
+  // Throws std::invalid_argument naming the field on a bad spec.
+  static FaultInjection parse(const std::string& spec);
 };
 
 class Node {
@@ -62,6 +89,10 @@ class Node {
   // Encodes and publishes on the vehicle-prefixed channel.
   template <class T>
   void publish(std::string_view base, const T& msg);
+
+  // Replaces the fault injection read from SDLQR_FAULTS at construction (tests over memq://).
+  void setFaultInjection(const FaultInjection& faults);
+  const FaultInjection& faultInjection() const { return faults_; }
 
   // Handles messages for up to timeout_ms and publishes HEARTBEAT when one is due.
   // Returns false once SIGINT or SIGTERM has been received.
@@ -97,6 +128,7 @@ class Node {
     virtual void onMessage(const void* data, uint32_t size) = 0;
     Node* node = nullptr;
     int64_t last_seq = -1;
+    std::chrono::steady_clock::time_point last_due{};  // keeps a channel's delayed messages in order
   };
   template <class T>
   struct TypedSubscription : SubscriptionBase {
@@ -104,6 +136,10 @@ class Node {
     T message;  // decoded in place: fixed-size types never allocate
     void onMessage(const void* data, uint32_t size) override {
       ++node->received_;
+      if (!encodingFits<T>(static_cast<const uint8_t*>(data), size)) {
+        node->countRejected(node->reject_size_);
+        return;
+      }
       if (message.decode(data, 0, static_cast<int>(size)) < 0) {
         node->countRejected(node->reject_decode_);
         return;
@@ -120,6 +156,9 @@ class Node {
   static void dispatch(const lcm_recv_buf_t* rbuf, const char* channel, void* sub);
   static void dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub);
   void noteSequence(SubscriptionBase& sub, int64_t seq);
+  void injectFault(SubscriptionBase& sub, const void* data, uint32_t size);
+  void deliverDueMessages();
+  int millisecondsToNextDue(int timeout_ms) const;
   void addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity);
   void publishRaw(const std::string& channel, const void* data, int size);
   // Full channel name of a base name, built once: publishing then never allocates.
@@ -134,6 +173,18 @@ class Node {
   std::vector<std::pair<std::string, std::string>> publish_channels_;  // base -> prefixed
   Counters counters_;
   Counters::Id reject_decode_;
+  Counters::Id reject_size_;
+  struct DelayedMessage {
+    SubscriptionBase* sub = nullptr;
+    std::chrono::steady_clock::time_point due;
+    std::vector<uint8_t> bytes;
+  };
+  FaultInjection faults_;
+  std::mt19937_64 fault_rng_;
+  std::vector<DelayedMessage> delayed_;
+  std::vector<std::vector<uint8_t>> spare_buffers_;
+  Counters::Id fault_dropped_ = -1;
+  Counters::Id fault_delayed_ = -1;
   ProcessState state_ = ProcessState::kStarting;
   int64_t sim_utime_ = 0;
   int64_t received_ = 0;
