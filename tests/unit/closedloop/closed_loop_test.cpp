@@ -7,6 +7,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "sanitized_build.hpp"
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/closedloop/closed_loop.hpp"
 
@@ -47,7 +48,7 @@ TEST(ClosedLoop, HoverJumpsPassEveryCriterionFasterThanRealTime) {
   }
   EXPECT_EQ(flight.report.setpoints.size(), 7u);  // take-off hold + six jumps
   EXPECT_EQ(flight.report.pulls.size(), 1u);
-  EXPECT_GE(speedup, 50.0);
+  if (!sdlqr::testing::kSanitizedBuild) EXPECT_GE(speedup, 50.0);  // instrumented code is several times slower
 }
 
 TEST(ClosedLoop, SameScenarioAndSeedFlyTheSameFlightBitForBit) {

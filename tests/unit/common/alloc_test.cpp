@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "allocation_counter.hpp"
+#include "sanitized_build.hpp"
 #include "sdlqr/common/lqr.hpp"
 #include "sdlqr/common/quaternion.hpp"
 
@@ -15,17 +16,7 @@
 namespace sdlqr {
 namespace {
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kSanitized = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kSanitized = true;
-#else
-constexpr bool kSanitized = false;
-#endif
-#else
-constexpr bool kSanitized = false;
-#endif
+using sdlqr::testing::kSanitizedBuild;
 
 struct Point {
   State x;
@@ -49,7 +40,7 @@ std::vector<Point> drawPoints(int count) {
 }
 
 TEST(LqrAllocation, TangentSolvesAllocateNothing) {
-  if (kSanitized) GTEST_SKIP() << "built with AddressSanitizer, whose allocator replaces operator new";
+  if (kSanitizedBuild) GTEST_SKIP() << "built with AddressSanitizer, whose allocator replaces operator new";
   const std::vector<Point> points = drawPoints(1000);
   const LqrParams params;
   int ok = 0;
@@ -62,7 +53,7 @@ TEST(LqrAllocation, TangentSolvesAllocateNothing) {
 }
 
 TEST(LqrAllocation, IterativeAndFailingSolvesAllocateNothing) {
-  if (kSanitized) GTEST_SKIP() << "built with AddressSanitizer, whose allocator replaces operator new";
+  if (kSanitizedBuild) GTEST_SKIP() << "built with AddressSanitizer, whose allocator replaces operator new";
   // Invalid parameters are left out: LqrParams::invalidReason() formats its message into a
   // std::string; parameters are validated once when they change, not per solve.
   const std::vector<Point> points = drawPoints(20);
