@@ -48,7 +48,9 @@ TEST(ClosedLoop, HoverJumpsPassEveryCriterionFasterThanRealTime) {
   }
   EXPECT_EQ(flight.report.setpoints.size(), 7u);  // take-off hold + six jumps
   EXPECT_EQ(flight.report.pulls.size(), 1u);
-  if (!sdlqr::testing::kSanitizedBuild) EXPECT_GE(speedup, 50.0);  // instrumented code is several times slower
+  if (!sdlqr::testing::kSanitizedBuild) {  // instrumented code is several times slower
+    EXPECT_GE(speedup, 50.0);
+  }
 }
 
 TEST(ClosedLoop, SameScenarioAndSeedFlyTheSameFlightBitForBit) {
