@@ -45,6 +45,7 @@ SolveStatus GainScheduler::solve(const StateEstimate& estimate, GainSet& out) {
   out.iterations = result.iterations;
   out.state_seq = estimate.seq;
   out.params_seq = params_seq_;
+  out.reference_seq = reference_seq_;
   out.method = params_.method == LqrMethod::kTangent ? GainsMethod::kTangent : GainsMethod::kIterative;
   out.status = result.status;
   if (result.status != SolveStatus::kOk) {

@@ -51,13 +51,17 @@ void StateDependentLqr::setGains(const GainSet& gains) {
   has_gains_ = true;
 }
 
-void StateDependentLqr::handleCommand(const Command& command) { references_.handleCommand(command, latest_); }
+void StateDependentLqr::handleCommand(const Command& command) {
+  references_.handleCommand(command, latest_);
+  command_seq_handled_ = command.seq;
+}
 
 std::string StateDependentLqr::setTrajectory(const Trajectory& trajectory) {
   return references_.setTrajectory(trajectory, latest_.utime);
 }
 
 void StateDependentLqr::applyParams(const ParamsUpdate& update) {
+  params_seq_handled_ = update.seq;
   LqrParams next = lqr_;
   if (update.field_mask & ParamsUpdate::kLimits) {
     next.omega_max = update.omega_max;
@@ -86,20 +90,23 @@ const GainMatrix& StateDependentLqr::chooseGain(int64_t now_utime, GainsFreshnes
   return fallback_K_;
 }
 
-bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out) {
-  const int64_t interval = has_estimate_ ? received.utime - latest_.utime : 0;
-  latest_ = received;
-  has_estimate_ = true;
+int64_t StateDependentLqr::tickUtimeFor(const StateEstimate& received) const {
   // Ticks sit on a fixed grid of simulation time. The last estimate before a grid point is
   // carried forward to it; an estimate at or past it (the first one, or after missing ones) ticks
   // at its own time.
-  int64_t tick_utime = received.utime;
-  if (received.utime < next_tick_utime_) {
-    const int64_t lead = next_tick_utime_ - received.utime;
-    const bool last_before_tick = interval > 0 && received.utime + interval > next_tick_utime_;
-    if (!last_before_tick || lead > maxPredictionUtime(params_)) return false;
-    tick_utime = next_tick_utime_;
-  }
+  if (received.utime >= next_tick_utime_) return received.utime;
+  const int64_t interval = has_estimate_ ? received.utime - latest_.utime : 0;
+  const int64_t lead = next_tick_utime_ - received.utime;
+  const bool last_before_tick = interval > 0 && received.utime + interval > next_tick_utime_;
+  if (!last_before_tick || lead > maxPredictionUtime(params_)) return -1;
+  return next_tick_utime_;
+}
+
+bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out) {
+  const int64_t tick_utime = tickUtimeFor(received);
+  latest_ = received;
+  has_estimate_ = true;
+  if (tick_utime < 0) return false;
   const int64_t period = periodUtime(params_);
   next_tick_utime_ = (tick_utime / period + 1) * period;
   if (received.status == EstimatorStatus::kInitializing) return false;
@@ -134,6 +141,8 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
   reference.utime = estimate.utime;
   reference.seq = reference_seq_++;
   reference.state_seq = estimate.seq;
+  reference.command_seq = command_seq_handled_;
+  reference.params_seq = params_seq_handled_;
 
   RateCommand& command = out.command;
   command.utime = estimate.utime;

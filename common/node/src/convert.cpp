@@ -161,6 +161,7 @@ GainSet fromLcm(const gains_t& m) {
   s.iterations = m.iterations;
   s.state_seq = m.state_seq;
   s.params_seq = m.params_seq;
+  s.reference_seq = m.reference_seq;
   s.method = static_cast<GainsMethod>(m.method);
   s.status = static_cast<SolveStatus>(m.status);
   return s;
@@ -183,6 +184,7 @@ gains_t toLcm(const GainSet& s) {
   m.iterations = s.iterations;
   m.state_seq = s.state_seq;
   m.params_seq = s.params_seq;
+  m.reference_seq = s.reference_seq;
   m.method = static_cast<int8_t>(s.method);
   m.status = static_cast<int8_t>(s.status);
   return m;
@@ -198,6 +200,8 @@ Reference fromLcm(const reference_t& m) {
   s.gamma = m.gamma;
   s.trajectory_seq = m.trajectory_seq;
   s.state_seq = m.state_seq;
+  s.command_seq = m.command_seq;
+  s.params_seq = m.params_seq;
   s.mode = static_cast<ReferenceMode>(m.mode);
   return s;
 }
@@ -212,6 +216,8 @@ reference_t toLcm(const Reference& s) {
   m.gamma = s.gamma;
   m.trajectory_seq = s.trajectory_seq;
   m.state_seq = s.state_seq;
+  m.command_seq = s.command_seq;
+  m.params_seq = s.params_seq;
   m.mode = static_cast<int8_t>(s.mode);
   return m;
 }

@@ -92,6 +92,7 @@ struct GainSet {
   int32_t iterations = 0;
   int64_t state_seq = -1;
   int64_t params_seq = -1;
+  int64_t reference_seq = -1;  // REFERENCE whose input was linearized at (-1: hover input)
   GainsMethod method = GainsMethod::kTangent;
   SolveStatus status = SolveStatus::kOk;
 };
@@ -107,6 +108,8 @@ struct Reference {
   double gamma = 0.0;
   int64_t trajectory_seq = -1;
   int64_t state_seq = -1;
+  int64_t command_seq = -1;  // last COMMAND handled
+  int64_t params_seq = -1;   // last PARAMS handled (-1: configuration file)
   ReferenceMode mode = ReferenceMode::kIdle;
 };
 

@@ -15,13 +15,18 @@ class GainScheduler {
   GainScheduler(const LqrParams& params, double rate_hz);
 
   // The reference input u0 of the controller's current tick (REFERENCE); hover until the first.
-  void setReference(const Reference& reference) { reference_input_ = reference.u; }
+  void setReference(const Reference& reference) {
+    reference_input_ = reference.u;
+    reference_seq_ = reference.seq;
+  }
   // Applies weights and limits from the next solve. Returns false (and changes nothing) when the
   // update would make the parameters invalid.
   bool applyParams(const ParamsUpdate& update);
 
   // True when this estimate is the first at or after the next grid time of the solve rate.
   bool due(const StateEstimate& estimate);
+  // As due(), without moving on to the next grid time (the replay asks before it feeds).
+  bool isDue(const StateEstimate& estimate) const { return estimate.utime >= next_utime_; }
   // Linearize at (estimate, reference input), discretize, solve. `out` is complete but for
   // solve_us. Never fills a non-finite K: on failure status != kOk and K is left zero.
   SolveStatus solve(const StateEstimate& estimate, GainSet& out);
@@ -36,6 +41,7 @@ class GainScheduler {
   int64_t next_utime_ = 0;
   Input reference_input_;
   int64_t params_seq_ = -1;
+  int64_t reference_seq_ = -1;
   int64_t seq_ = 0;
   int64_t solves_ = 0;
   int64_t failures_ = 0;

@@ -45,6 +45,10 @@ class StateDependentLqr {
   // (stamped with the tick's time); false between ticks, before the estimator is initialised, and
   // while idle on the ground.
   bool onStateEstimate(const StateEstimate& estimate, Tick& out);
+  // The time of the tick this estimate would be computed into (its own, or the grid point it is
+  // carried forward to), -1 if none; changes nothing. Whether a command comes out also depends
+  // on the flight phase. For the replay, which asks before it feeds.
+  int64_t tickUtimeFor(const StateEstimate& received) const;
 
   const ControllerStatus& status() const { return status_; }
   const GainMatrix& fallbackGain() const { return fallback_K_; }
@@ -64,6 +68,9 @@ class StateDependentLqr {
   double last_thrust_;  // [m/s^2] for carrying an estimate forward to the tick
   int64_t command_seq_ = 0;
   int64_t reference_seq_ = 0;
+  // Inputs named in each REFERENCE, so a replay can check it fed the tick the same ones.
+  int64_t command_seq_handled_ = -1;
+  int64_t params_seq_handled_ = -1;
   ControllerStatus status_;
 };
 

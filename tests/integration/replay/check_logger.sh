@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The logger on the fixture's flight:
+#   export  every channel's CSV has one row per message of the log and every row re-encodes to
+#           the recorded bytes (decode -> CSV -> parse, exactly);
+#   kill9   the recording killed with kill -9 mid-flight holds every message received more than
+#           1 s before the kill.
+#   check_logger.sh export|kill9 SDLQR_LOGGER EXPORT_ROUNDTRIP_CHECK FLIGHT_DIR
+set -u
+mode="$1" logger="$2" check="$3" dir="$4"
+case "$mode" in
+  export)
+    rm -rf "$dir/csv"
+    "$logger" export "$dir/flight.lcmlog" --out "$dir/csv" >/dev/null 2>"$dir/export.err" || {
+      echo "FAIL: export: $(cat "$dir/export.err")"; exit 1; }
+    "$check" "$dir/flight.lcmlog" "$dir/csv" ;;
+  kill9)
+    killed=$(cat "$dir/killed.utime")
+    echo "killed at $killed; log holds $(stat -c %s "$dir/killed.lcmlog") bytes"
+    "$check" --prefix-of "$dir/flight.lcmlog" "$dir/killed.lcmlog" --before $((killed - 1000000)) ;;
+  *) echo "unknown mode $mode"; exit 2 ;;
+esac
