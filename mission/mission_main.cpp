@@ -25,8 +25,14 @@ void describe(const mission::ScenarioEvent& event, double now) {
       break;
     }
     case mission::ScenarioEvent::Kind::kDisturbance:
-      std::fprintf(stderr, "disturbance force (%.2f, %.2f, %.2f) N for %.2f s", event.disturbance.force[0],
-                   event.disturbance.force[1], event.disturbance.force[2], event.disturbance.duration);
+      if (event.disturbance.mode == DisturbanceMode::kHold) {
+        std::fprintf(stderr, "disturbance hold at (%.2f, %.2f, %.2f) m, %.0f N/m, for %.2f s",
+                     event.disturbance.hold_position[0], event.disturbance.hold_position[1],
+                     event.disturbance.hold_position[2], event.disturbance.hold_stiffness, event.disturbance.duration);
+      } else {
+        std::fprintf(stderr, "disturbance force (%.2f, %.2f, %.2f) N for %.2f s", event.disturbance.force[0],
+                     event.disturbance.force[1], event.disturbance.force[2], event.disturbance.duration);
+      }
       break;
     case mission::ScenarioEvent::Kind::kParams:
       std::fprintf(stderr, "params mask %d", event.params.field_mask);

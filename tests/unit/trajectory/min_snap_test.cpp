@@ -6,6 +6,7 @@
 #include <random>
 
 #include "sdlqr/trajectory/min_snap.hpp"
+#include "sdlqr/trajectory/paper_cases.hpp"
 
 namespace sdlqr::trajectory {
 namespace {
@@ -147,6 +148,32 @@ TEST(MinSnap, UniformTimeScalingIsMonotoneAndExact) {
       EXPECT_LT((resolved.evaluate(t).position - scaled.evaluate(t).position).norm(), 1e-9);
       EXPECT_LT((resolved.evaluate(t).velocity - scaled.evaluate(t).velocity).norm(), 1e-9);
     }
+  }
+}
+
+// The paper's trajectories as flown (time allocation and v_max scaling included): C^4 at every
+// waypoint, each waypoint hit, at rest at both ends, top speed exactly v_max.
+TEST(MinSnap, PaperTrajectoriesAsFlownAreContinuousUpToSnapAndHitTheirWaypoints) {
+  const TrajectoryParams params;
+  for (const double v_max : {params.fast_v_max, params.slow_v_max}) {
+    const MinSnapTrajectory trajectory = paperMinSnap(v_max, params);
+    const std::vector<Waypoint> waypoints = paperPathWaypoints(params);
+    ASSERT_EQ(static_cast<std::size_t>(trajectory.segmentCount()) + 1, waypoints.size());
+    for (int order = 0; order <= 4; ++order) {
+      const double jump = worstKnotJump(trajectory, order, false);
+      std::cout << "  v_max " << v_max << ": derivative " << order << " largest relative jump " << jump << "\n";
+      EXPECT_LT(jump, 1e-10) << "v_max " << v_max << " order " << order;
+    }
+    for (std::size_t j = 0; j < waypoints.size(); ++j) {
+      const double t = j < static_cast<std::size_t>(trajectory.segmentCount()) ? trajectory.axes[0].segmentStart(j)
+                                                                                 : trajectory.duration();
+      EXPECT_LT((trajectory.evaluate(t).position - waypoints[j].position).norm(), 1e-9) << "waypoint " << j;
+    }
+    for (double t : {0.0, trajectory.duration()}) EXPECT_LT(trajectory.evaluate(t).velocity.norm(), 1e-9);
+    double top = 0.0;
+    for (double t = 0.0; t <= trajectory.duration(); t += 1e-3) top = std::max(top, trajectory.evaluate(t).velocity.norm());
+    EXPECT_LE(top, v_max * (1.0 + 1e-9));
+    EXPECT_GT(top, v_max * 0.999);
   }
 }
 
