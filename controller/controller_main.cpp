@@ -1,6 +1,7 @@
 // sdlqr-controller: wires the bus to the 100 Hz state-dependent LQR (controller/ library).
 
 #include <algorithm>
+#include <chrono>
 #include <iostream>
 
 #include "sdlqr/common/cli.hpp"
@@ -58,6 +59,8 @@ int main(int argc, char** argv) {
     int64_t now_utime = -1;
 
     controller::StateDependentLqr::Tick tick;
+    // A tick that takes longer than the estimate period delays the next estimate's tick.
+    constexpr std::chrono::microseconds kTickBudget{4000};
     bus.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t& msg) {
       const StateEstimate estimate = node::fromLcm(msg);
       RejectReason reason = validate(estimate, limits);
@@ -77,7 +80,7 @@ int main(int argc, char** argv) {
       if (tick.command.saturated) bus.counters().increment(saturated_id);
       bus.setState(status.gains == GainsFreshness::kFresh ? node::ProcessState::kRunning
                                                           : node::ProcessState::kDegraded);
-    });
+    }, 1, kTickBudget);
     bus.subscribe<gains_t>(channel::kGains, [&](const gains_t& msg) {
       const GainSet gains = node::fromLcm(msg);
       RejectReason reason = validate(gains, limits);

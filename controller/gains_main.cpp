@@ -45,6 +45,9 @@ int runOnBus(const ProcessOptions& options, const LqrParams& lqr, const controll
   node::WatchdogReport state_report(bus.counters(), "state_est");
 
   GainSet gains;
+  // A solve that outlasts the estimate period makes the next estimate wait (the 10 Hz schedule
+  // itself has 100 ms of room).
+  constexpr std::chrono::microseconds kSolveBudget{4000};
   bus.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t& msg) {
     const StateEstimate estimate = node::fromLcm(msg);
     RejectReason reason = validate(estimate, limits);
@@ -66,7 +69,7 @@ int runOnBus(const ProcessOptions& options, const LqrParams& lqr, const controll
       return;
     }
     bus.publish(channel::kGains, node::toLcm(gains));
-  });
+  }, 1, kSolveBudget);
   bus.subscribe<reference_t>(channel::kReference, [&](const reference_t& msg) {
     const Reference reference = node::fromLcm(msg);
     if (reject(validate(reference, limits))) return;

@@ -1,6 +1,7 @@
 // sdlqr-estimator: wires IMU and VIO_POSE from the bus into the estimator library and publishes
 // STATE_EST on the IMU-time output grid. All logic lives in sdlqr_estimator.
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -22,6 +23,8 @@ using sdlqr::estimator::Rejection;
 // ride out a descheduled process without losing data; a lost sample would leave a hole bridged
 // only by interpolation. Poses are few and each one is worth fusing, even late.
 constexpr int kImuQueueCapacity = 64;
+// An IMU sample handled slower than the IMU period (1 kHz) is a missed deadline.
+constexpr std::chrono::microseconds kImuBudget{1000};
 constexpr int kVioQueueCapacity = 4;
 
 // Mirrors the library's counters into the heartbeat, adding only what changed since last time.
@@ -119,7 +122,7 @@ int main(int argc, char** argv) {
           }
           node.publish(sdlqr::channel::kStateEstimate, sdlqr::node::toLcm(*estimate));
         },
-        kImuQueueCapacity);
+        kImuQueueCapacity, kImuBudget);
     node.subscribe<sdlqr::vio_pose_t>(
         sdlqr::channel::kVioPose,
         [&](const sdlqr::vio_pose_t& msg) {

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <string>
 
 #include "sdlqr/common/cli.hpp"
@@ -109,7 +110,7 @@ int main(int argc, char** argv) {
         }
       }
       bus.setState(command.mode == MotorMode::kFailsafe ? node::ProcessState::kFailsafe : node::ProcessState::kRunning);
-    }, 64);
+    }, 64, std::chrono::microseconds(1000));  // a step longer than the IMU period is a missed deadline
     bus.subscribe<rate_cmd_t>(channel::kRateCommand, [&](const rate_cmd_t& msg) {
       const lowlevel::RateCommandReject reason = loop.setRateCommand(node::fromLcm(msg));
       if (reason != lowlevel::RateCommandReject::kNone) {
@@ -118,6 +119,7 @@ int main(int argc, char** argv) {
       }
       rate_watchdog.feed(node::monotonicSeconds());
     }, 1);
+    int64_t last_command_seq = -1;
     bus.subscribe<command_t>(channel::kCommand, [&](const command_t& msg) {
       const Command command = node::fromLcm(msg);
       if (validate(command, limits) != RejectReason::kNone) {
@@ -129,6 +131,10 @@ int main(int argc, char** argv) {
         bus.countRejected(order == RejectReason::kTimeBackwards ? command_replay_id : command_future_id);
         return;
       }
+      // The mission re-sends its current command (same seq) for a restarted controller: acting on
+      // it again would re-arm a vehicle the failsafe has landed.
+      if (command.seq == last_command_seq) return;
+      last_command_seq = command.seq;
       loop.handleCommand(command);  // a refused arm is counted by the loop ("arm.refused")
     }, 16);
     bus.subscribe<params_t>(channel::kParams, [&](const params_t& msg) {

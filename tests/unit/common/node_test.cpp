@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
 
 #include "allocation_counter.hpp"
 #include "sdlqr/node/convert.hpp"
@@ -96,6 +98,29 @@ TEST(Node, PublishingAndHandlingAllocateNothingOnceRunning) {
   const long allocations = sdlqr::testing::allocationCount() - before;
   EXPECT_EQ(allocations, 0);
   EXPECT_EQ(last_seq, 1009);
+}
+
+TEST(Node, AHandlerOverItsBudgetCountsADeadlineMiss) {
+  Node node("test", memq());
+  bool slow = false;
+  node.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t&) {
+    if (slow) std::this_thread::sleep_for(std::chrono::milliseconds(3));
+  }, 8, std::chrono::microseconds(1000));
+  node.subscribe<rate_cmd_t>(channel::kRateCommand, [](const rate_cmd_t&) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(3));  // no budget: never counted
+  }, 8);
+  for (int64_t seq = 0; seq < 3; ++seq) {
+    node.publish(channel::kStateEstimate, estimate(seq));
+    node.spin(0);
+  }
+  rate_cmd_t command{};
+  node.publish(channel::kRateCommand, command);
+  node.spin(0);
+  EXPECT_EQ(node.deadlineMisses(), 0);
+  slow = true;
+  node.publish(channel::kStateEstimate, estimate(3));
+  node.spin(0);
+  EXPECT_EQ(node.deadlineMisses(), 1);
 }
 
 }  // namespace

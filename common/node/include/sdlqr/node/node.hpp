@@ -75,9 +75,11 @@ class Node {
 
   // Decodes each message of `base` as T and calls handler(msg). A message that fails to decode
   // is counted as rejected ("reject.decode") and never reaches the handler. Gaps in `seq` count
-  // as dropped. queue_capacity 1 keeps only the newest message for control channels.
+  // as dropped. queue_capacity 1 keeps only the newest message for control channels. A handler
+  // that runs longer than a non-zero `budget` (wall time) counts as a deadline miss in HEARTBEAT.
   template <class T>
-  void subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity = 1);
+  void subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity = 1,
+                 std::chrono::microseconds budget = std::chrono::microseconds::zero());
 
   // Undecoded messages of every channel whose full name matches the LCM regex `pattern` (no
   // vehicle prefix is added): for recorders. Counted as received; `receive_utime` is LCM's
@@ -118,6 +120,7 @@ class Node {
   int64_t received() const { return received_; }
   int64_t rejected() const { return rejected_; }
   int64_t dropped() const { return dropped_; }
+  int64_t deadlineMisses() const { return deadline_misses_; }
   const std::string& process() const { return process_; }
 
   void publishHeartbeat();
@@ -128,6 +131,7 @@ class Node {
     virtual void onMessage(const void* data, uint32_t size) = 0;
     Node* node = nullptr;
     int64_t last_seq = -1;
+    std::chrono::steady_clock::duration budget{};  // zero: not timed
     std::chrono::steady_clock::time_point last_due{};  // keeps a channel's delayed messages in order
   };
   template <class T>
@@ -145,7 +149,13 @@ class Node {
         return;
       }
       node->noteSequence(*this, message.seq);
+      if (budget == std::chrono::steady_clock::duration::zero()) {
+        handler(message);
+        return;
+      }
+      const auto start = std::chrono::steady_clock::now();
       handler(message);
+      if (std::chrono::steady_clock::now() - start > budget) node->countDeadlineMiss();
     }
   };
   struct RawSubscription {
@@ -201,9 +211,11 @@ class Node {
 };
 
 template <class T>
-void Node::subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity) {
+void Node::subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity,
+                     std::chrono::microseconds budget) {
   auto sub = std::make_unique<TypedSubscription<T>>();
   sub->handler = std::move(handler);
+  sub->budget = budget;
   addSubscription(channel(base), std::move(sub), queue_capacity);
 }
 
