@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "sdlqr/common/cli.hpp"
+#include "sdlqr/mission/command_resender.hpp"
 #include "sdlqr/mission/mission_player.hpp"
 #include "sdlqr/mission/trajectory_request.hpp"
 #include "sdlqr/node/convert.hpp"
@@ -61,6 +62,10 @@ int main(int argc, char** argv) {
     addProcessOptions(parser, &options);
     parser.addOption("--no-clock-timeout", &no_clock_timeout, "S",
                      "give up (exit 1) when no IMU arrives for this many wall seconds (default 10)");
+    double resend_interval = 1.0;
+    parser.addOption("--resend-interval", &resend_interval, "S",
+                     "re-send the current TAKEOFF/GOTO every S s of simulation time, for a restarted\n"
+                     "controller (default 1, 0: never)");
     parser.addFlag("--describe", &describe_only,
                    "validate the scenario, print name, vehicle, seed, rate and duration as key=value lines, exit");
     parser.allowPositional(&positional, "SCENARIO.yaml");
@@ -91,6 +96,10 @@ int main(int argc, char** argv) {
 
     node::Node bus("sdlqr-mission", options);
     mission::MissionPlayer player(scenario);
+    if (!(resend_interval >= 0.0 && resend_interval <= 60.0)) {
+      throw std::invalid_argument("--resend-interval: must be in [0, 60] s");
+    }
+    mission::CommandResender resender(static_cast<int64_t>(resend_interval * 1e6));
     int64_t now_utime = -1;
     // One sequence per channel: subscribers count gaps in seq as lost messages.
     int64_t command_seq = 0, disturbance_seq = 0, params_seq = 0, trajectory_seq = 0;
@@ -128,6 +137,7 @@ int main(int argc, char** argv) {
             command.utime = now_utime;
             command.seq = command_seq++;
             bus.publish(channel::kCommand, node::toLcm(command));
+            resender.sent(command);
             break;
           }
           case mission::ScenarioEvent::Kind::kDisturbance: {
@@ -155,6 +165,7 @@ int main(int argc, char** argv) {
           }
         }
       }
+      if (const Command* resend = resender.due(now_utime)) bus.publish(channel::kCommand, node::toLcm(*resend));
       if (player.finished(now_utime)) {
         finished = true;
         break;

@@ -5,7 +5,7 @@ namespace sdlqr::controller {
 ControllerParams ControllerParams::load(const ConfigReader& controller) {
   controller.allowOnly({"rate_hz", "max_prediction_s", "gains_stale_s", "gains_fallback_s", "max_position_error", "max_velocity_error",
                         "takeoff_speed", "landing_speed", "landed_speed", "landed_time", "landing_undershoot",
-                        "tracking"});
+                        "rejoin_height", "tracking"});
   ControllerParams p;
   controller.read("rate_hz", p.rate_hz);
   controller.read("max_prediction_s", p.max_prediction_s);
@@ -18,6 +18,7 @@ ControllerParams ControllerParams::load(const ConfigReader& controller) {
   controller.read("landed_speed", p.landed_speed);
   controller.read("landed_time", p.landed_time);
   controller.read("landing_undershoot", p.landing_undershoot);
+  controller.read("rejoin_height", p.rejoin_height);
   std::string tracking = p.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial";
   controller.read("tracking", tracking);
   if (tracking == "spatial") {
@@ -47,6 +48,7 @@ std::string ControllerParams::invalidReason() const {
   if (!(landed_speed > 0.0)) return "landed_speed: must be > 0";
   if (!(landed_time >= 0.0)) return "landed_time: must be >= 0";
   if (!(landing_undershoot >= 0.0 && landing_undershoot <= 2.0)) return "landing_undershoot: must be in [0, 2] m";
+  if (!(rejoin_height > 0.0 && rejoin_height <= 10.0)) return "rejoin_height: must be in (0, 10] m";
   return {};
 }
 

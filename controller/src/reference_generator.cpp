@@ -39,11 +39,17 @@ bool ReferenceGenerator::setTrackingMode(ReferenceMode mode, int64_t now_utime) 
 
 void ReferenceGenerator::handleCommand(const Command& command, const StateEstimate& latest) {
   const bool flying = phase_ != FlightPhase::kIdle;
+  const bool rejoined = rejoined_;
+  rejoined_ = false;
+  const double takeoff_height = command.position[2] > 0.0 ? command.position[2] : 1.0;
   switch (command.command) {
     case CommandType::kTakeoff:
       if (!flying) {
         takeoff_pending_ = true;
-        pending_takeoff_height_ = command.position[2] > 0.0 ? command.position[2] : 1.0;
+        pending_takeoff_height_ = takeoff_height;
+      } else if (rejoined && phase_ == FlightPhase::kHold) {
+        // The take-off this flight began with: its height above the ground is the held setpoint.
+        setpoint_[2] = ground_z_ + takeoff_height;
       }
       break;
     case CommandType::kGoto:
@@ -80,6 +86,15 @@ void ReferenceGenerator::startTakeoff(const StateEstimate& estimate, double heig
   takeoff_pending_ = false;
 }
 
+void ReferenceGenerator::rejoin(const StateEstimate& estimate) {
+  // The ground plane z = 0 stands in for the take-off height this instance never saw.
+  ground_z_ = 0.0;
+  const double z = takeoff_pending_ ? ground_z_ + pending_takeoff_height_ : estimate.position[2];
+  takeoff_pending_ = false;
+  hold(Vec3(estimate.position[0], estimate.position[1], z), quat::yaw(estimate.orientation));
+  rejoined_ = true;
+}
+
 void ReferenceGenerator::hold(const Vec3& position, double yaw) {
   setpoint_ = position;
   yaw_ = yaw;
@@ -103,11 +118,20 @@ bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
   Vec3 position_ref = setpoint_;
   Vec3 velocity_ref = Vec3::Zero();
   switch (phase_) {
-    case FlightPhase::kIdle:
-      if (!takeoff_pending_ || estimate.status != EstimatorStatus::kOk) return false;
+    case FlightPhase::kIdle: {
+      if (estimate.status != EstimatorStatus::kOk) return false;
+      const bool first_estimate = !seen_estimate_;
+      seen_estimate_ = true;
+      if (first_estimate && estimate.position[2] > params_.rejoin_height) {
+        rejoin(estimate);
+        position_ref = setpoint_;
+        break;
+      }
+      if (!takeoff_pending_) return false;
       startTakeoff(estimate, pending_takeoff_height_);
       position_ref = ramp_position_;
       break;
+    }
     case FlightPhase::kTakeoff:
       ramp_position_[2] = std::min(ramp_target_z_, ramp_position_[2] + params_.takeoff_speed * dt);
       position_ref = ramp_position_;

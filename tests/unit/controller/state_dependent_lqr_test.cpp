@@ -36,7 +36,9 @@ void takeOffAndHold(StateDependentLqr& controller, double yaw = 0.0) {
   controller.onStateEstimate(estimateAt(0, Vec3::Zero()), tick);
   controller.handleCommand(command(CommandType::kTakeoff, Vec3(0, 0, 1)));
   controller.onStateEstimate(estimateAt(10000, Vec3::Zero()), tick);
-  controller.handleCommand(command(CommandType::kGoto, Vec3(0, 0, 1), yaw));
+  Command hold = command(CommandType::kGoto, Vec3(0, 0, 1), yaw);
+  hold.seq = 1;  // the take-off was seq 0: the same seq would be a re-send of it
+  controller.handleCommand(hold);
 }
 
 TEST(StateDependentLqr, TicksExactlyEvery10msFromTheLastOfA250HzEstimateBeforeTheTick) {

@@ -20,6 +20,10 @@ struct ControllerParams {
   double landed_speed = 0.1;          // [m/s] below this, near the ground, for landed_time: landed
   double landed_time = 1.0;           // [s]
   double landing_undershoot = 0.3;    // [m] the landing reference continues this far below the ground
+  // A controller (re)started while its first estimates show the vehicle this far above the ground
+  // plane z = 0 of the world frame (the frame VIO and the simulator share) rejoins the flight in a
+  // hold instead of waiting on the ground for a take-off.
+  double rejoin_height = 0.2;         // [m]
   ReferenceMode tracking = ReferenceMode::kSpatial;  // for trajectories that do not say
 
   static ControllerParams load(const ConfigReader& controller);

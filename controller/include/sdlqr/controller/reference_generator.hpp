@@ -2,6 +2,10 @@
 // Chooses the reference (x0, u0) of each controller tick: idle on the ground, a take-off ramp,
 // a held setpoint (reference jumps of Fig. 5 are setpoint changes), a tracked trajectory, or a
 // landing ramp. Clock-free: time is the state estimate's utime.
+//
+// Rejoining: a generator whose first initialised estimate shows the vehicle airborne (a controller
+// restarted mid-flight while the lowlevel's failsafe holds the vehicle level) holds where the
+// vehicle is instead of idling; the mission's re-sent TAKEOFF or GOTO then restores the setpoint.
 
 #include "sdlqr/common/messages.hpp"
 #include "sdlqr/controller/controller_params.hpp"
@@ -30,12 +34,15 @@ class ReferenceGenerator {
   bool update(const StateEstimate& estimate, Reference& out);
 
   FlightPhase phase() const { return phase_; }
+  // True from a rejoin until the next command: a TAKEOFF then sets the held height above the ground.
+  bool rejoined() const { return rejoined_; }
   const trajectory::TrajectoryTracker& tracker() const { return tracker_; }
 
  private:
   void startTakeoff(const StateEstimate& estimate, double height);
   void hold(const Vec3& position, double yaw);
   bool landedAt(const StateEstimate& estimate);
+  void rejoin(const StateEstimate& estimate);
 
   ControllerParams params_;
   double gravity_;
@@ -47,6 +54,8 @@ class ReferenceGenerator {
   Vec3 ramp_position_ = Vec3::Zero();
   double ramp_target_z_ = 0.0;
   double ground_z_ = 0.0;
+  bool seen_estimate_ = false;  // an initialised estimate has reached update()
+  bool rejoined_ = false;
   int64_t last_utime_ = -1;
   int64_t landed_since_utime_ = -1;
   trajectory::TrajectoryTracker tracker_;

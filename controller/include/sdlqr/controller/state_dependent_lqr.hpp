@@ -30,6 +30,7 @@ class StateDependentLqr {
 
   // A K that passed validation (finite, solved OK); older than the current one is ignored.
   void setGains(const GainSet& gains);
+  // A COMMAND with the seq of the one handled last is the mission's re-send and changes nothing.
   void handleCommand(const Command& command);
   // Starts tracking (copies the samples: call on receipt). Empty string when accepted, else why not.
   std::string setTrajectory(const Trajectory& trajectory);
