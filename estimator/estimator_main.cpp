@@ -99,7 +99,8 @@ int main(int argc, char** argv) {
   return sdlqr::runMain(parser.program(), [&]() {
     sdlqr::estimator::EstimatorParams params;
     if (!options.config_path.empty()) {
-      const sdlqr::ConfigReader root(sdlqr::loadYamlFile(options.config_path), "");
+      // The vehicle file's reader: an unknown section is an error here as in every process.
+      const sdlqr::ConfigReader root = sdlqr::loadVehicleConfig(options.config_path);
       params = sdlqr::estimator::EstimatorParams::load(root.child("estimator"));
     }
     Estimator estimator(params);

@@ -28,8 +28,9 @@ LowlevelParams LowlevelParams::load(const ConfigReader& lowlevel) {
 std::string LowlevelParams::invalidReason() const {
   if (!(idle_thrust >= 0.0 && std::isfinite(idle_thrust))) return "idle_thrust: must be finite and >= 0";
   if (!(rate_cmd_timeout > 0.0 && rate_cmd_timeout <= 5.0)) return "rate_cmd_timeout: must be in (0, 5] s";
+  // dt_max first: an invalid dt_max must be named, not blamed on dt_min.
+  if (!(dt_max > 0.0 && dt_max <= 0.1)) return "dt_max: must be in (0, 0.1] s";
   if (!(dt_min > 0.0 && dt_min < dt_max)) return "dt_min: must be in (0, dt_max)";
-  if (!(dt_max <= 0.1)) return "dt_max: must be <= 0.1 s";
   if (!(hover_thrust_time_constant > 0.0 && std::isfinite(hover_thrust_time_constant))) {
     return "hover_thrust_time_constant: must be > 0";
   }

@@ -1,0 +1,271 @@
+// Config validation of every process, table-driven over config/quad255.yaml: for each field of
+// each section a wrong type, a non-finite and (numbers) a negative value, a list of the wrong
+// length, and an unknown key in every section; plus a missing and an unparsable file. Each case
+// runs the real executable (in a network namespace without interfaces) and expects exit code 2
+// and exactly one line on stderr that names the key.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Which executables read which section (their main's ::load calls).
+const std::map<std::string, std::vector<std::string>>& readers() {
+  static const std::map<std::string, std::vector<std::string>> table{
+      {"vehicle", {"sim/sdlqr-sim", "lowlevel/sdlqr-lowlevel"}},
+      {"lqr", {"controller/sdlqr-controller", "controller/sdlqr-gains", "lowlevel/sdlqr-lowlevel", "mission/sdlqr-mission"}},
+      {"sim", {"sim/sdlqr-sim"}},
+      {"lowlevel", {"lowlevel/sdlqr-lowlevel"}},
+      {"trajectory", {"mission/sdlqr-mission"}},
+      {"estimator", {"estimator/sdlqr-estimator"}},
+      {"faults", {"controller/sdlqr-controller", "controller/sdlqr-gains", "lowlevel/sdlqr-lowlevel"}},
+      {"controller", {"controller/sdlqr-controller"}},
+      {"gains", {"controller/sdlqr-gains"}},
+  };
+  return table;
+}
+
+std::vector<std::string> allExecutables() {
+  std::set<std::string> all;
+  for (const auto& [section, exes] : readers()) all.insert(exes.begin(), exes.end());
+  return {all.begin(), all.end()};
+}
+
+// Fields that legitimately take any finite number of either sign, with the reason.
+const std::map<std::string, const char*>& signedFields() {
+  static const std::map<std::string, const char*> table{
+      {"vehicle.yaw_sign", "a sign per rotor: -1 is one of the two valid values"},
+      {"sim.initial_position", "a position in the world"},
+      {"sim.initial_yaw", "an angle"},
+      {"trajectory.height_offset", "a shift of the waypoints' z, either way"},
+      {"trajectory.yaw", "an angle"},
+  };
+  return table;
+}
+
+struct Case {
+  std::string name;       // gtest-safe
+  std::string key;        // what the error must name
+  std::string executable; // relative to the build folder
+  std::string yaml;       // the whole vehicle file, or empty with `config_path` set
+  std::string config_path;
+};
+
+std::string joined(const std::vector<std::string>& path) {
+  std::string out;
+  for (const std::string& part : path) out += (out.empty() ? "" : ".") + part;
+  return out;
+}
+
+std::string safeName(std::string text) {
+  for (char& c : text) {
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  }
+  return text;
+}
+
+std::string shortName(const std::string& executable) { return executable.substr(executable.rfind('/') + 1); }
+
+YAML::Node nodeAt(YAML::Node root, const std::vector<std::string>& path) {
+  YAML::Node node;
+  node.reset(root);
+  for (const std::string& key : path) {
+    YAML::Node next = node[key];
+    node.reset(next);
+  }
+  return node;
+}
+
+std::string emit(const YAML::Node& root) {
+  YAML::Emitter out;
+  out << root;
+  return std::string(out.c_str()) + "\n";
+}
+
+bool isNumber(const YAML::Node& scalar) {
+  double value = 0.0;
+  return YAML::convert<double>::decode(scalar, value);
+}
+
+void collectLeaves(const YAML::Node& node, std::vector<std::string>& path,
+                   std::vector<std::vector<std::string>>& leaves, std::vector<std::vector<std::string>>& maps) {
+  if (node.IsMap()) {
+    maps.push_back(path);
+    for (const auto& entry : node) {
+      path.push_back(entry.first.as<std::string>());
+      collectLeaves(entry.second, path, leaves, maps);
+      path.pop_back();
+    }
+  } else {
+    leaves.push_back(path);
+  }
+}
+
+// The vehicle file plus the sections it leaves to the defaults, so those are tested as well.
+YAML::Node baseConfig() {
+  YAML::Node root = YAML::LoadFile(SDLQR_VEHICLE_FILE);
+  if (!root["controller"]) {
+    YAML::Node controller;
+    controller["rate_hz"] = 100.0;
+    controller["gains_stale_s"] = 0.3;
+    controller["gains_fallback_s"] = 1.0;
+    controller["takeoff_speed"] = 0.5;
+    controller["landing_speed"] = 0.4;
+    controller["rejoin_height"] = 0.2;
+    controller["tracking"] = "spatial";
+    root["controller"] = controller;
+  }
+  if (!root["gains"]) {
+    YAML::Node gains;
+    gains["rate_hz"] = 10.0;
+    gains["state_timeout_s"] = 0.5;
+    root["gains"] = gains;
+  }
+  return root;
+}
+
+// The variant of `root` with the leaf at `path` replaced by `value` (a YAML fragment).
+std::string withValue(const YAML::Node& root, const std::vector<std::string>& path, const YAML::Node& value) {
+  YAML::Node copy = YAML::Clone(root);
+  YAML::Node leaf = nodeAt(copy, path);
+  leaf = value;
+  return emit(copy);
+}
+
+std::vector<Case> buildCases() {
+  std::vector<Case> cases;
+  const YAML::Node root = baseConfig();
+  std::vector<std::vector<std::string>> leaves, maps;
+  std::vector<std::string> path;
+  collectLeaves(root, path, leaves, maps);
+
+  auto add = [&](const std::string& what, const std::string& key, const std::string& yaml, bool every_reader) {
+    const std::string section = key.substr(0, key.find('.'));
+    const auto found = readers().find(section);
+    const std::vector<std::string> exes = found == readers().end() ? allExecutables() : found->second;
+    for (size_t i = 0; i < (every_reader ? exes.size() : 1); ++i) {
+      cases.push_back({safeName(key + "_" + what + "_" + shortName(exes[i])), key, exes[i], yaml, ""});
+    }
+  };
+
+  for (const std::vector<std::string>& leaf_path : leaves) {
+    const std::string key = joined(leaf_path);
+    const YAML::Node original = nodeAt(YAML::Clone(root), leaf_path);
+    add("wrong_type", key, withValue(root, leaf_path, YAML::Load("[not, a, value]")), false);
+    if (original.IsSequence()) {
+      add("string", key, withValue(root, leaf_path, YAML::Node("not-a-list")), false);
+      YAML::Node shorter = YAML::Clone(original);
+      YAML::Node cut;
+      for (size_t i = 0; i + 1 < shorter.size(); ++i) cut.push_back(shorter[i]);
+      add("short_list", key, withValue(root, leaf_path, cut), false);
+      YAML::Node with_nan = YAML::Clone(original);
+      with_nan[0] = YAML::Load(".nan");
+      add("nan_element", key, withValue(root, leaf_path, with_nan), false);
+    } else if (isNumber(original)) {
+      add("string", key, withValue(root, leaf_path, YAML::Node("not-a-number")), false);
+      add("nan", key, withValue(root, leaf_path, YAML::Load(".nan")), false);
+      add("inf", key, withValue(root, leaf_path, YAML::Load(".inf")), false);
+      if (!signedFields().count(key)) add("negative", key, withValue(root, leaf_path, YAML::Node(-1.0)), false);
+    } else {
+      add("bad_word", key, withValue(root, leaf_path, YAML::Node("not-a-choice")), false);
+    }
+  }
+  // An unknown key in every section and subsection, seen by every process that reads it.
+  for (const std::vector<std::string>& map_path : maps) {
+    YAML::Node copy = YAML::Clone(root);
+    nodeAt(copy, map_path)["no_such_key"] = 1;
+    std::vector<std::string> key_path = map_path;
+    key_path.push_back("no_such_key");
+    add("unknown_key", joined(key_path), emit(copy), true);
+  }
+  // One invalid field per section reaches every process that reads the section.
+  for (const auto& [section, exes] : readers()) {
+    for (const std::vector<std::string>& leaf_path : leaves) {
+      if (leaf_path.front() != section || !isNumber(nodeAt(YAML::Clone(root), leaf_path))) continue;
+      add("nan_every_reader", joined(leaf_path), withValue(root, leaf_path, YAML::Load(".nan")), true);
+      break;
+    }
+  }
+  for (const std::string& exe : allExecutables()) {
+    cases.push_back({safeName("missing_file_" + shortName(exe)), "/no/such/dir/vehicle.yaml", exe, "",
+                     "/no/such/dir/vehicle.yaml"});
+    // The error names the file (its name is the case name).
+    cases.push_back({safeName("unparsable_file_" + shortName(exe)), safeName("unparsable_file_" + shortName(exe)) + ".yaml",
+                     exe, "vehicle: [1, 2\nlqr: {\n", ""});
+  }
+  return cases;
+}
+
+struct RunResult {
+  int exit_code = -1;
+  std::string stderr_text;
+};
+
+std::string quoted(const std::string& text) { return "'" + text + "'"; }
+
+bool namespacesAvailable() {
+  static const bool available = std::system("unshare -n true > /dev/null 2>&1") == 0 ||
+                                std::system("unshare -rn true > /dev/null 2>&1") == 0;
+  return available;
+}
+
+RunResult run(const std::string& executable, const std::string& config_path, const std::string& stderr_path) {
+  const std::string unshare = std::system("unshare -n true > /dev/null 2>&1") == 0 ? "unshare -n" : "unshare -rn";
+  std::string command = "timeout -s KILL 20 " + unshare + " " + quoted(std::string(SDLQR_BUILD_DIR) + "/" + executable);
+  if (executable == "mission/sdlqr-mission") command += " " + quoted(SDLQR_SCENARIO_FILE);
+  command += " --config " + quoted(config_path) + " > /dev/null 2> " + quoted(stderr_path);
+  const int status = std::system(command.c_str());
+  RunResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(stderr_path);
+  std::stringstream text;
+  text << in.rdbuf();
+  result.stderr_text = text.str();
+  return result;
+}
+
+// gtest prints a failing parameter with this instead of its bytes.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.executable << " " << c.name; }
+
+class ConfigValidation : public ::testing::TestWithParam<Case> {};
+
+TEST_P(ConfigValidation, OneLineNamingTheKeyAndExitCode2) {
+  if (!namespacesAvailable()) GTEST_SKIP() << "no network namespaces: not running processes on the host network";
+  const Case& c = GetParam();
+  const fs::path dir = fs::temp_directory_path() / ("sdlqr_config_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  std::string config_path = c.config_path;
+  if (config_path.empty()) {
+    config_path = (dir / (c.name + ".yaml")).string();
+    std::ofstream(config_path) << c.yaml;
+  }
+  const RunResult result = run(c.executable, config_path, (dir / (c.name + ".err")).string());
+  fs::remove_all(dir);
+  const std::string program = shortName(c.executable);
+  EXPECT_EQ(result.exit_code, 2) << result.stderr_text;
+  EXPECT_EQ(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n'), 1)
+      << "expected one line:\n" << result.stderr_text;
+  EXPECT_EQ(result.stderr_text.rfind(program + ": ", 0), 0u) << result.stderr_text;
+  EXPECT_NE(result.stderr_text.find(c.key), std::string::npos) << "does not name " << c.key << ": " << result.stderr_text;
+  std::cout << program << " | " << result.stderr_text;
+}
+
+INSTANTIATE_TEST_SUITE_P(VehicleFile, ConfigValidation, ::testing::ValuesIn(buildCases()),
+                         [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+}  // namespace
