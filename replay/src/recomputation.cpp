@@ -1,5 +1,6 @@
 #include "sdlqr/replay/recomputation.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sdlqr::replay {
@@ -53,7 +54,7 @@ void Recomputation::step() {
     case InputKind::kImu: onImu(flight_.imu[i]); break;
     case InputKind::kVioPose: estimator_.onVio(flight_.vio_pose[i]); break;
     case InputKind::kStateEstimate: onRecordedEstimate(flight_.state_estimate[i].seq); break;
-    case InputKind::kCommand: onCommand(flight_.command[i]); break;
+    case InputKind::kCommand: heard_commands_.push_back(i); break;
     case InputKind::kTrajectory: onTrajectory(flight_.trajectory[i]); break;
     case InputKind::kParams: onParams(flight_.params[i]); break;
   }
@@ -62,6 +63,8 @@ void Recomputation::step() {
 void Recomputation::finish() {
   for (const auto& [seq, estimate] : waiting_) handOver(estimate);
   waiting_.clear();
+  for (std::size_t i : heard_commands_) applyCommand(flight_.command[i]);
+  heard_commands_.clear();
 }
 
 bool Recomputation::rejected(RejectReason reason) {
@@ -138,6 +141,7 @@ bool Recomputation::missedByController(const StateEstimate& estimate, const Rate
 
 // sdlqr-controller's STATE_EST handler, with the GAINS of the next recorded tick fed first.
 void Recomputation::controllerOnEstimate(const StateEstimate& estimate) {
+  deliverCommandsBefore(estimate);
   RejectReason reason = validate(estimate, limits_);
   if (reason == RejectReason::kNone) reason = controller_state_time_.check(estimate.utime, -1);
   if (rejected(reason)) return;
@@ -203,7 +207,33 @@ void Recomputation::gainsOnEstimate(const StateEstimate& estimate) {
   outputs_.gains.push_back(gains);
 }
 
-void Recomputation::onCommand(const Command& command) {
+// COMMAND and STATE_EST race on the bus like GAINS do: the REFERENCE of the tick computed from
+// this estimate names the last COMMAND the controller had handled.
+void Recomputation::deliverCommandsBefore(const StateEstimate& estimate) {
+  const std::vector<RateCommand>& ticks = flight_.rate_command;
+  std::size_t t = next_tick_;
+  while (t < ticks.size() && ticks[t].state_seq < estimate.seq) ++t;
+  const auto reference = t < ticks.size() && ticks[t].state_seq == estimate.seq
+                             ? recorded_reference_.find(ticks[t].reference_seq)
+                             : recorded_reference_.end();
+  if (reference == recorded_reference_.end()) {  // no tick to say otherwise: the recorder's order
+    for (std::size_t i : heard_commands_) applyCommand(flight_.command[i]);
+    heard_commands_.clear();
+    return;
+  }
+  const int64_t named = flight_.reference[reference->second].command_seq;
+  for (const Command& command : flight_.command) {  // in log order, also those heard later
+    if (command.seq > applied_command_seq_ && command.seq <= named) applyCommand(command);
+  }
+  heard_commands_.erase(std::remove_if(heard_commands_.begin(), heard_commands_.end(),
+                                       [&](std::size_t i) { return flight_.command[i].seq <= applied_command_seq_; }),
+                        heard_commands_.end());
+}
+
+// sdlqr-controller's COMMAND handler; a re-sent command (same seq) is handled once.
+void Recomputation::applyCommand(const Command& command) {
+  if (command.seq <= applied_command_seq_) return;
+  applied_command_seq_ = command.seq;
   if (rejected(validate(command, limits_))) return;
   controller_.handleCommand(command);
 }

@@ -127,5 +127,31 @@ TEST(Recomputation, TheRecordedPairingDecidesTheReferenceOfASolve) {
   EXPECT_EQ(replay.outputs().gains[s].u_lin, recorded.reference[static_cast<size_t>(named - 3)].u);
 }
 
+// COMMAND races STATE_EST on the bus too: the recorder may hear the take-off after the estimate
+// from which the controller already computed its first tick. The REFERENCE of that tick names
+// the command (command_seq), so the replay applies it before the tick all the same.
+TEST(Recomputation, ACommandTheRecorderHeardLateIsAppliedBeforeTheTickThatNamesIt) {
+  const ClosedLoopFlight& c = closedLoopFlight();
+  RecordedFlight recorded = replayedFlight();
+  int moved = 0;
+  for (size_t i = 0; i < recorded.order.size(); ++i) {
+    if (recorded.order[i].kind != InputKind::kCommand) continue;
+    // Three estimates later in the log than where it was heard.
+    size_t j = i;
+    for (int estimates = 0; j + 1 < recorded.order.size() && estimates < 3; ++j) {
+      std::swap(recorded.order[j], recorded.order[j + 1]);
+      if (recorded.order[j].kind == InputKind::kStateEstimate) ++estimates;
+    }
+    ++moved;
+    i = j;
+  }
+  ASSERT_GE(moved, 2);
+  Recomputation replay(test::paramsOf(c.config), recorded);
+  replay.runToEnd();
+  const Comparison comparison = compareOutputs(recorded, replay.outputs(), 0.0);
+  std::cout << formatComparison(comparison);
+  EXPECT_TRUE(comparison.bitForBit());
+}
+
 }  // namespace
 }  // namespace sdlqr::replay

@@ -8,9 +8,11 @@
 // it used, and the replay feeds each process the same pairing:
 //   - estimator: IMU and VIO_POSE in the recorder's order; STATE_EST names imu_seq and vio_seq.
 //   - controller: each recomputed STATE_EST is handed over where the recorded STATE_EST of that
-//     seq sits in the log (COMMAND, TRAJECTORY, PARAMS in between keep their place); before the
-//     tick of a recorded RATE_CMD, the controller is given the GAINS that RATE_CMD names
-//     (gains_seq), recomputed by the replay's solver.
+//     seq sits in the log (TRAJECTORY, PARAMS in between keep their place); before the tick of a
+//     recorded RATE_CMD, the controller is given the GAINS that RATE_CMD names (gains_seq),
+//     recomputed by the replay's solver, and every COMMAND up to the one its REFERENCE names
+//     (command_seq), even one the recorder heard later; a COMMAND the recorder heard before an
+//     estimate whose tick names an older one is held back until after that estimate.
 //   - gain solver: at each solve, the REFERENCE that the recorded GAINS names (reference_seq) is
 //     the reference input, recomputed by the replay's controller.
 //   - REFERENCE names command_seq, params_seq and trajectory_seq; GAINS names state_seq and
@@ -21,6 +23,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <vector>
 
 #include "sdlqr/common/params.hpp"
 #include "sdlqr/common/validate.hpp"
@@ -85,7 +88,8 @@ class Recomputation {
   bool missedByController(const StateEstimate& estimate, const RateCommand& recorded) const;
   void gainsOnEstimate(const StateEstimate& estimate);
   void feedNamedGains(int64_t gains_seq);
-  void onCommand(const Command& command);
+  void deliverCommandsBefore(const StateEstimate& estimate);
+  void applyCommand(const Command& command);
   void onTrajectory(const Trajectory& trajectory);
   void onParams(const ParamsUpdate& update);
   bool rejected(RejectReason reason);
@@ -109,6 +113,8 @@ class Recomputation {
   std::size_t next_tick_ = 0;         // index of the next recorded RATE_CMD
   std::size_t next_solve_ = 0;        // index of the next recorded GAINS
   int64_t fed_gains_seq_ = -1;
+  std::vector<std::size_t> heard_commands_;  // COMMANDs the recorder heard, not yet applied
+  int64_t applied_command_seq_ = -1;
   // Recomputed outputs by seq, for the pairing.
   std::map<int64_t, std::size_t> replayed_gains_, replayed_reference_;
   std::map<int64_t, std::size_t> recorded_gains_, recorded_reference_, recorded_estimate_;
