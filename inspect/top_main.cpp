@@ -10,6 +10,7 @@
 #include "sdlqr/common/channels.hpp"
 #include "sdlqr/common/cli.hpp"
 #include "sdlqr/inspect/bus_monitor.hpp"
+#include "sdlqr/logger/heartbeat_from_lcm.hpp"
 #include "sdlqr/node/node.hpp"
 #include "sdlqr/heartbeat_t.hpp"
 
@@ -21,25 +22,6 @@ int64_t wallUtime() {
   timespec now{};
   clock_gettime(CLOCK_REALTIME, &now);
   return static_cast<int64_t>(now.tv_sec) * 1'000'000 + now.tv_nsec / 1000;
-}
-
-logger::HeartbeatRecord toRecord(const heartbeat_t& m) {
-  logger::HeartbeatRecord h;
-  h.utime = m.utime;
-  h.seq = m.seq;
-  h.process = m.process;
-  h.pid = m.pid;
-  h.state = m.state;
-  h.received = m.received;
-  h.published = m.published;
-  h.dropped = m.dropped;
-  h.rejected = m.rejected;
-  h.deadline_misses = m.deadline_misses;
-  h.errors = m.errors;
-  h.cpu_percent = m.cpu_percent;
-  for (int i = 0; i < m.num_counters; ++i) h.counters.emplace_back(m.counter_names[i], m.counter_values[i]);
-  h.last_error = m.last_error;
-  return h;
 }
 
 bool isHeartbeat(const std::string& channel) {
@@ -78,7 +60,7 @@ int main(int argc, char** argv) {
       if (!isHeartbeat(channel)) return;
       heartbeat_t heartbeat;
       if (heartbeat.decode(data, 0, static_cast<int>(size)) < 0) return;
-      monitor.onHeartbeat(channel, toRecord(heartbeat), receive_utime);
+      monitor.onHeartbeat(channel, logger::toHeartbeatRecord(heartbeat), receive_utime);
     }, 4096);
     bus.setState(node::ProcessState::kRunning);
 

@@ -17,7 +17,7 @@ template <class LcmType>
 auto toPlain(const LcmType& m) {
   return node::fromLcm(m);
 }
-HeartbeatRecord toPlain(const heartbeat_t& m) { return detail::toHeartbeatRecord(m); }
+HeartbeatRecord toPlain(const heartbeat_t& m) { return toHeartbeatRecord(m); }
 
 template <class LcmType, class Plain>
 bool decodeAs(const LogEvent& event, Plain* out) {

@@ -32,7 +32,7 @@ void collect(const rate_cmd_t& m, const std::string& channel, int64_t, MetricsIn
 }
 void collect(const heartbeat_t& m, const std::string& channel, int64_t receive_utime, MetricsInput& input) {
   HeartbeatSeries& series = input.heartbeats[channel];
-  series.records.push_back(detail::toHeartbeatRecord(m));
+  series.records.push_back(toHeartbeatRecord(m));
   series.receive_utime.push_back(receive_utime);
 }
 
