@@ -42,6 +42,7 @@ wait "$pid" 2>/dev/null
 grep -E '^launch:.*(ended|crash|killed)' "$work/launch.out"
 echo "process_outage: kill -9 $name at wall $kill_us us, restarted $(( (restart_us - kill_us) / 1000 )) ms later;" \
      "launcher exit $launch_status, restarted $name alive to the end: $restarted_alive"
-"$build/faults/sdlqr-faultcheck" "$log" "--$name-outage" "$kill_us,$restart_us" "$@"
-check_status=$?
+# The figures stay in the work folder (check.out) after ctest, which shows output only on failure.
+"$build/faults/sdlqr-faultcheck" "$log" "--$name-outage" "$kill_us,$restart_us" "$@" | tee "$work/check.out"
+check_status=${PIPESTATUS[0]}
 [ "$launch_status" -eq 0 ] && [ "$restarted_alive" -eq 1 ] && [ "$check_status" -eq 0 ]
