@@ -1,4 +1,4 @@
-// Config validation of every process, table-driven over config/quad255.yaml: for each field of
+// Config validation of every process, table-driven over config/quad255.yaml and two scenarios: for each field of
 // each section a wrong type, a non-finite and (numbers) a negative value, a list of the wrong
 // length, and an unknown key in every section; plus a missing and an unparsable file. Each case
 // runs the real executable (in a network namespace without interfaces) and expects exit code 2
@@ -64,6 +64,7 @@ struct Case {
   std::string executable; // relative to the build folder
   std::string yaml;       // the whole vehicle file, or empty with `config_path` set
   std::string config_path;
+  bool scenario = false;  // the file is a scenario for sdlqr-mission, not a vehicle file
 };
 
 std::string joined(const std::vector<std::string>& path) {
@@ -211,6 +212,84 @@ std::vector<Case> buildCases() {
   return cases;
 }
 
+// Scenario files (sdlqr-mission): every field of the events of every kind, the header and the
+// criteria. Paths name sequence elements as the mission does: events[3].trajectory.laps.
+const std::set<std::string>& freeTextFields() {
+  static const std::set<std::string> fields{"name", "description", "label"};
+  return fields;
+}
+
+void collectScenarioLeaves(const YAML::Node& node, const std::string& key, std::vector<std::string>& leaves,
+                           std::vector<std::string>& maps) {
+  if (node.IsMap()) {
+    maps.push_back(key);
+    for (const auto& entry : node) {
+      const std::string name = entry.first.as<std::string>();
+      collectScenarioLeaves(entry.second, key.empty() ? name : key + "." + name, leaves, maps);
+    }
+  } else if (node.IsSequence() && node.size() > 0 && node[0].IsMap()) {
+    for (size_t i = 0; i < node.size(); ++i) {
+      collectScenarioLeaves(node[i], key + "[" + std::to_string(i) + "]", leaves, maps);
+    }
+  } else {
+    leaves.push_back(key);
+  }
+}
+
+// The node at a path written as above ("events[3].trajectory").
+YAML::Node scenarioNodeAt(YAML::Node root, const std::string& key) {
+  YAML::Node node;
+  node.reset(root);
+  std::string part;
+  std::stringstream parts(key);
+  while (std::getline(parts, part, '.')) {
+    const size_t bracket = part.find('[');
+    YAML::Node next = node[part.substr(0, bracket)];
+    node.reset(next);
+    if (bracket != std::string::npos) {
+      YAML::Node element = node[std::stoi(part.substr(bracket + 1))];
+      node.reset(element);
+    }
+  }
+  return node;
+}
+
+std::vector<Case> buildScenarioCases() {
+  std::vector<Case> cases;
+  for (const char* file : {"hover_jumps", "minsnap_pulled"}) {
+    YAML::Node root = YAML::LoadFile(std::string(SDLQR_SCENARIO_DIR) + "/" + file + ".yaml");
+    root["vehicle"] = SDLQR_VEHICLE_FILE;  // the case files are written elsewhere
+    std::vector<std::string> leaves, maps;
+    collectScenarioLeaves(root, "", leaves, maps);
+    auto add = [&](const std::string& what, const std::string& key, const YAML::Node& changed) {
+      cases.push_back({safeName(std::string(file) + "_" + key + "_" + what), key, "mission/sdlqr-mission",
+                       emit(changed), "", true});
+    };
+    for (const std::string& key : leaves) {
+      const std::string field = key.substr(key.rfind('.') == std::string::npos ? 0 : key.rfind('.') + 1);
+      if (freeTextFields().count(field) || key == "vehicle") continue;
+      YAML::Node wrong = YAML::Clone(root);
+      scenarioNodeAt(wrong, key) = YAML::Load("{not: a value}");
+      add("wrong_type", key, wrong);
+      if (isNumber(scenarioNodeAt(YAML::Clone(root), key))) {
+        YAML::Node nan = YAML::Clone(root);
+        scenarioNodeAt(nan, key) = YAML::Load(".nan");
+        add("nan", key, nan);
+      }
+    }
+    for (const std::string& map_key : maps) {
+      // criteria is an open name: number mapping by design (each analysis looks up the names it
+      // knows, with a default): an unknown name is not an error there.
+      if (map_key == "criteria") continue;
+      YAML::Node copy = YAML::Clone(root);
+      scenarioNodeAt(copy, map_key)["no_such_key"] = 1;
+      const std::string key = map_key.empty() ? "no_such_key" : map_key + ".no_such_key";
+      add("unknown_key", key, copy);
+    }
+  }
+  return cases;
+}
+
 struct RunResult {
   int exit_code = -1;
   std::string stderr_text;
@@ -224,11 +303,17 @@ bool namespacesAvailable() {
   return available;
 }
 
-RunResult run(const std::string& executable, const std::string& config_path, const std::string& stderr_path) {
+RunResult run(const std::string& executable, const std::string& config_path, bool scenario,
+              const std::string& stderr_path) {
   const std::string unshare = std::system("unshare -n true > /dev/null 2>&1") == 0 ? "unshare -n" : "unshare -rn";
   std::string command = "timeout -s KILL 20 " + unshare + " " + quoted(std::string(SDLQR_BUILD_DIR) + "/" + executable);
-  if (executable == "mission/sdlqr-mission") command += " " + quoted(SDLQR_SCENARIO_FILE);
-  command += " --config " + quoted(config_path) + " > /dev/null 2> " + quoted(stderr_path);
+  if (scenario) {
+    command += " " + quoted(config_path);
+  } else {
+    if (executable == "mission/sdlqr-mission") command += " " + quoted(SDLQR_SCENARIO_FILE);
+    command += " --config " + quoted(config_path);
+  }
+  command += " > /dev/null 2> " + quoted(stderr_path);
   const int status = std::system(command.c_str());
   RunResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -239,33 +324,42 @@ RunResult run(const std::string& executable, const std::string& config_path, con
   return result;
 }
 
-// gtest prints a failing parameter with this instead of its bytes.
-void PrintTo(const Case& c, std::ostream* os) { *os << c.executable << " " << c.name; }
-
-class ConfigValidation : public ::testing::TestWithParam<Case> {};
-
-TEST_P(ConfigValidation, OneLineNamingTheKeyAndExitCode2) {
+// Runs every case; one gtest failure per wrong case, named by the case. One test per file kind
+// (not one per case): the cases share one process start each and ctest lists two tests.
+void runAll(const std::vector<Case>& cases) {
   if (!namespacesAvailable()) GTEST_SKIP() << "no network namespaces: not running processes on the host network";
-  const Case& c = GetParam();
   const fs::path dir = fs::temp_directory_path() / ("sdlqr_config_" + std::to_string(getpid()));
   fs::create_directories(dir);
-  std::string config_path = c.config_path;
-  if (config_path.empty()) {
-    config_path = (dir / (c.name + ".yaml")).string();
-    std::ofstream(config_path) << c.yaml;
+  std::map<std::string, int> per_executable;
+  int passed = 0;
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.executable + " " + c.name);
+    std::string config_path = c.config_path;
+    if (config_path.empty()) {
+      config_path = (dir / (c.name + ".yaml")).string();
+      std::ofstream(config_path) << c.yaml;
+    }
+    const RunResult result = run(c.executable, config_path, c.scenario, (dir / (c.name + ".err")).string());
+    const std::string program = shortName(c.executable);
+    const bool exit_ok = result.exit_code == 2;
+    const bool one_line = std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n') == 1;
+    const bool named = result.stderr_text.rfind(program + ": ", 0) == 0 && result.stderr_text.find(c.key) != std::string::npos;
+    EXPECT_TRUE(exit_ok) << "exit code " << result.exit_code << ": " << result.stderr_text;
+    EXPECT_TRUE(one_line) << "expected one line:\n" << result.stderr_text;
+    EXPECT_TRUE(named) << "does not name " << c.key << ": " << result.stderr_text;
+    if (exit_ok && one_line && named) ++passed;
+    ++per_executable[program];
   }
-  const RunResult result = run(c.executable, config_path, (dir / (c.name + ".err")).string());
   fs::remove_all(dir);
-  const std::string program = shortName(c.executable);
-  EXPECT_EQ(result.exit_code, 2) << result.stderr_text;
-  EXPECT_EQ(std::count(result.stderr_text.begin(), result.stderr_text.end(), '\n'), 1)
-      << "expected one line:\n" << result.stderr_text;
-  EXPECT_EQ(result.stderr_text.rfind(program + ": ", 0), 0u) << result.stderr_text;
-  EXPECT_NE(result.stderr_text.find(c.key), std::string::npos) << "does not name " << c.key << ": " << result.stderr_text;
-  std::cout << program << " | " << result.stderr_text;
+  std::cout << passed << " of " << cases.size() << " invalid files refused with one line naming the key, exit 2:";
+  for (const auto& [program, count] : per_executable) std::cout << " " << program << " " << count;
+  std::cout << "\n";
+  ::testing::Test::RecordProperty("cases", static_cast<int>(cases.size()));
+  ::testing::Test::RecordProperty("passed", passed);
 }
 
-INSTANTIATE_TEST_SUITE_P(VehicleFile, ConfigValidation, ::testing::ValuesIn(buildCases()),
-                         [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+TEST(ConfigValidation, EveryInvalidFieldOfTheVehicleFileIsRefusedByEveryReader) { runAll(buildCases()); }
+
+TEST(ConfigValidation, EveryInvalidFieldOfAScenarioIsRefusedByTheMission) { runAll(buildScenarioCases()); }
 
 }  // namespace
