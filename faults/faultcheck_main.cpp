@@ -135,6 +135,11 @@ int main(int argc, char** argv) {
     parser.allowPositional(&positional, "LOG");
     parser.parseOrExit(argc, argv);
     if (positional.size() != 1) throw std::invalid_argument("expected one LOG file");
+    // Bad outage options fail before the log is read.
+    if (!gains_outage.empty()) parseOutage("--gains-outage", gains_outage);
+    if (!estimator_outage.empty()) parseOutage("--estimator-outage", estimator_outage);
+    if (!controller_outage.empty()) parseOutage("--controller-outage", controller_outage);
+    if (!controller_outage.empty() && setpoint_text.empty()) throw std::invalid_argument("--controller-outage needs --setpoint");
     const logger::FlightLog log = logger::FlightLog::load(positional[0], vehicle);
 
     std::map<std::string, const logger::HeartbeatRecord*> last;

@@ -71,6 +71,9 @@ int main(int argc, char** argv) {
     parser.allowPositional(&positional, "SCENARIO.yaml");
     parser.parseOrExit(argc, argv);
     if (positional.size() != 1) throw std::invalid_argument("expected one scenario file (see --help)");
+    if (!(resend_interval >= 0.0 && resend_interval <= 60.0)) {
+      throw std::invalid_argument("--resend-interval: must be in [0, 60] s");
+    }
 
     const mission::Scenario scenario = mission::Scenario::load(positional[0]);
     const ConfigReader vehicle_config = loadVehicleConfig(
@@ -96,9 +99,6 @@ int main(int argc, char** argv) {
 
     node::Node bus("sdlqr-mission", options);
     mission::MissionPlayer player(scenario);
-    if (!(resend_interval >= 0.0 && resend_interval <= 60.0)) {
-      throw std::invalid_argument("--resend-interval: must be in [0, 60] s");
-    }
     mission::CommandResender resender(static_cast<int64_t>(resend_interval * 1e6));
     int64_t now_utime = -1;
     // One sequence per channel: subscribers count gaps in seq as lost messages.
