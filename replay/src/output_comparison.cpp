@@ -1,5 +1,6 @@
 #include "sdlqr/replay/output_comparison.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -155,6 +156,15 @@ ChannelComparison compareSeries(const char* channel, const std::vector<T>& recor
     if (walker.withinTolerance()) ++out.within_tolerance;
     by_seq.erase(it);
   }
+  if (!recorded.empty()) {
+    const int64_t last_recorded = std::max_element(recorded.begin(), recorded.end(), [](const T& a, const T& b) {
+                                    return a.seq < b.seq;
+                                  })->seq;
+    for (auto it = by_seq.upper_bound(last_recorded); it != by_seq.end();) {
+      ++out.after_recording;
+      it = by_seq.erase(it);
+    }
+  }
   out.only_replayed = static_cast<int64_t>(by_seq.size());
   if (out.first_difference.empty() && !by_seq.empty()) {
     out.first_difference =
@@ -209,6 +219,11 @@ std::string formatComparison(const Comparison& comparison) {
     text += "\n";
   }
   for (const ChannelComparison& c : comparison.channels) {
+    if (c.after_recording) {
+      std::snprintf(line, sizeof line, "  %s: %lld recomputed after the recording ended (not compared)\n",
+                    c.channel.c_str(), static_cast<long long>(c.after_recording));
+      text += line;
+    }
     if (c.first_difference.empty()) continue;
     text += "first difference: " + c.first_difference + "\n";
     for (const FieldDifference& d : c.fields) {

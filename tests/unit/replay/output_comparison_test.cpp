@@ -78,18 +78,44 @@ TEST(OutputComparison, ReportsTheFirstDifferenceAndTheLargestPerField) {
 }
 
 TEST(OutputComparison, MissingAndExtraMessagesAreDifferences) {
-  const RecordedFlight f = recording();
+  RecordedFlight f = recording();
   ReplayOutputs o = outputsOf(f);
-  o.rate_command.erase(o.rate_command.begin() + 1);
-  RateCommand extra = o.rate_command.back();
-  extra.seq = 99;
-  o.rate_command.push_back(extra);
+  o.rate_command.erase(o.rate_command.begin() + 1);  // seq 1: recorded, not recomputed
+  f.rate_command.erase(f.rate_command.begin() + 2);  // seq 2: recomputed, not in the recording
   const Comparison c = compareOutputs(f, o, 1.0);
   const ChannelComparison& rate = c.channels[1];
   EXPECT_EQ(rate.only_recorded, 1);
   EXPECT_EQ(rate.only_replayed, 1);
+  EXPECT_EQ(rate.after_recording, 0);
   EXPECT_FALSE(c.withinTolerance());
   EXPECT_EQ(rate.first_difference, "RATE_CMD seq 1: recorded, not recomputed");
+}
+
+// The recorder stops a moment before the processes do: what the replay computes past a channel's
+// last recorded message is reported, not a difference. A channel with nothing recorded is.
+TEST(OutputComparison, MessagesRecomputedAfterTheRecordingEndedAreNotDifferences) {
+  const RecordedFlight f = recording();
+  ReplayOutputs o = outputsOf(f);
+  RateCommand extra = o.rate_command.back();
+  extra.seq = 5;
+  o.rate_command.push_back(extra);
+  const Comparison c = compareOutputs(f, o, 0.0);
+  const ChannelComparison& rate = c.channels[1];
+  ASSERT_EQ(rate.channel, "RATE_CMD");
+  EXPECT_EQ(rate.after_recording, 1);
+  EXPECT_EQ(rate.only_replayed, 0);
+  EXPECT_TRUE(c.bitForBit());
+  EXPECT_NE(formatComparison(c).find("RATE_CMD: 1 recomputed after the recording ended"), std::string::npos);
+
+  RecordedFlight no_gains = f;
+  no_gains.gains.clear();
+  const Comparison without = compareOutputs(no_gains, o, 0.0);
+  for (const ChannelComparison& ch : without.channels) {
+    if (ch.channel == "GAINS") {
+      EXPECT_EQ(ch.only_replayed, 5);
+    }
+  }
+  EXPECT_FALSE(without.bitForBit());
 }
 
 }  // namespace
