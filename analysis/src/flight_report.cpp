@@ -24,7 +24,11 @@ struct Event {
 
 std::vector<Event> flightEvents(const logger::FlightLog& log, const mission::Scenario& scenario) {
   std::vector<Event> events;
+  std::set<int64_t> command_seqs;
   for (const Command& c : log.command.messages) {
+    // sdlqr-mission re-sends its current command once a second (same seq) for a restarted
+    // controller: one event per command.
+    if (!command_seqs.insert(c.seq).second) continue;
     Event e;
     e.t = seconds(c.utime);
     e.position = c.position;
