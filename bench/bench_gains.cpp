@@ -17,10 +17,10 @@
 #include <vector>
 
 #include "gains_states.hpp"
-#include "sdlqr/common/discretize.hpp"
-#include "sdlqr/common/kernel_isa.hpp"
-#include "sdlqr/common/lqr.hpp"
-#include "sdlqr/common/riccati.hpp"
+#include "sdlqr/math/discretize.hpp"
+#include "sdlqr/math/kernel_isa.hpp"
+#include "sdlqr/math/lqr.hpp"
+#include "sdlqr/math/riccati.hpp"
 
 namespace sdlqr::bench {
 namespace {

@@ -8,7 +8,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::bench {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "gains_states.hpp"
-#include "sdlqr/common/lqr.hpp"
+#include "sdlqr/math/lqr.hpp"
 
 int main(int argc, char** argv) {
   using namespace sdlqr;

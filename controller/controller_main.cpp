@@ -4,13 +4,13 @@
 #include <chrono>
 #include <iostream>
 
-#include "sdlqr/common/cli.hpp"
-#include "sdlqr/common/validate.hpp"
-#include "sdlqr/common/watchdog.hpp"
+#include "sdlqr/config/cli.hpp"
+#include "sdlqr/health/validate.hpp"
+#include "sdlqr/health/watchdog.hpp"
 #include "sdlqr/controller/state_dependent_lqr.hpp"
-#include "sdlqr/node/convert.hpp"
-#include "sdlqr/node/node.hpp"
-#include "sdlqr/node/watchdog_report.hpp"
+#include "sdlqr/bus/convert.hpp"
+#include "sdlqr/bus/node.hpp"
+#include "sdlqr/bus/watchdog_report.hpp"
 
 using namespace sdlqr;
 
@@ -31,9 +31,9 @@ int main(int argc, char** argv) {
     const FaultParams faults = FaultParams::load(config.child("faults"));
     controller::StateDependentLqr lqr_controller(lqr, params);
 
-    node::Node bus("sdlqr-controller", options);
+    bus::Node bus("sdlqr-controller", options);
     const ValidationLimits limits;
-    node::Counters::Id reject_ids[static_cast<int>(RejectReason::kCount)];
+    bus::Counters::Id reject_ids[static_cast<int>(RejectReason::kCount)];
     for (int i = 0; i < static_cast<int>(RejectReason::kCount); ++i) {
       reject_ids[i] = bus.counters().add(counterName(static_cast<RejectReason>(i)));
     }
@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
     // STATE_EST watchdog runs on wall time, since a silent estimator brings no time at all.
     const auto gains_freshness_id = bus.counters().add("watchdog.gains.freshness");  // 0 fresh, 1 stale, 2 fallback
     Watchdog state_watchdog(faults.controller_state_timeout_s);
-    node::WatchdogReport state_report(bus.counters(), "state_est");
+    bus::WatchdogReport state_report(bus.counters(), "state_est");
     // Counts a rejection; true when the message must be dropped.
     auto reject = [&](RejectReason reason) {
       if (reason == RejectReason::kNone) return false;
@@ -62,27 +62,27 @@ int main(int argc, char** argv) {
     // A tick that takes longer than the estimate period delays the next estimate's tick.
     constexpr std::chrono::microseconds kTickBudget{4000};
     bus.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t& msg) {
-      const StateEstimate estimate = node::fromLcm(msg);
+      const StateEstimate estimate = bus::fromLcm(msg);
       RejectReason reason = validate(estimate, limits);
       if (reason == RejectReason::kNone) reason = state_time.offer(estimate.utime);
       if (reject(reason)) return;
-      state_watchdog.feed(node::monotonicSeconds());
+      state_watchdog.feed(bus::monotonicSeconds());
       now_utime = estimate.utime;
       bus.setSimTime(now_utime);
       if (!lqr_controller.onStateEstimate(estimate, tick)) return;
-      bus.publish(channel::kRateCommand, node::toLcm(tick.command));
-      bus.publish(channel::kReference, node::toLcm(tick.reference));
+      bus.publish(channel::kRateCommand, bus::toLcm(tick.command));
+      bus.publish(channel::kReference, bus::toLcm(tick.reference));
       const controller::ControllerStatus& status = lqr_controller.status();
       bus.counters().increment(ticks_id);
       bus.counters().set(gains_freshness_id, static_cast<int64_t>(status.gains));
       if (status.gains == GainsFreshness::kFallback) bus.counters().increment(fallback_id);
       if (status.gains == GainsFreshness::kStale) bus.counters().increment(stale_id);
       if (tick.command.saturated) bus.counters().increment(saturated_id);
-      bus.setState(status.gains == GainsFreshness::kFresh ? node::ProcessState::kRunning
-                                                          : node::ProcessState::kDegraded);
+      bus.setState(status.gains == GainsFreshness::kFresh ? bus::ProcessState::kRunning
+                                                          : bus::ProcessState::kDegraded);
     }, 1, kTickBudget);
     bus.subscribe<gains_t>(channel::kGains, [&](const gains_t& msg) {
-      const GainSet gains = node::fromLcm(msg);
+      const GainSet gains = bus::fromLcm(msg);
       RejectReason reason = validate(gains, limits);
       if (reason == RejectReason::kNone) reason = gains_time.check(gains.utime, now_utime);
       // Last: the eigenvalues cost ~10 us, spent only on a K that passed the cheap checks.
@@ -92,14 +92,14 @@ int main(int argc, char** argv) {
       lqr_controller.setGains(gains);
     }, 4);
     bus.subscribe<command_t>(channel::kCommand, [&](const command_t& msg) {
-      const Command command = node::fromLcm(msg);
+      const Command command = bus::fromLcm(msg);
       RejectReason reason = validate(command, limits);
       if (reason == RejectReason::kNone) reason = command_order.offer(command.utime, command.seq, now_utime);
       if (reject(reason)) return;
       lqr_controller.handleCommand(command);
     }, 16);
     bus.subscribe<trajectory_t>(channel::kTrajectory, [&](const trajectory_t& msg) {
-      const Trajectory trajectory = node::fromLcm(msg);
+      const Trajectory trajectory = bus::fromLcm(msg);
       if (reject(validate(trajectory, limits))) return;
       const std::string refused = lqr_controller.setTrajectory(trajectory);
       if (!refused.empty()) {
@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
       }
     }, 2);
     bus.subscribe<params_t>(channel::kParams, [&](const params_t& msg) {
-      const ParamsUpdate update = node::fromLcm(msg);
+      const ParamsUpdate update = bus::fromLcm(msg);
       RejectReason reason = validate(update, limits);
       if (reason == RejectReason::kNone) reason = params_order.offer(update.utime, update.seq, now_utime);
       if (reject(reason)) return;
@@ -119,10 +119,10 @@ int main(int argc, char** argv) {
     // Short spins: the watchdog must notice a silent estimator within its timeout.
     const int spin_ms = std::max(1, static_cast<int>(faults.controller_state_timeout_s * 1e3 / 4));
     while (bus.spin(spin_ms)) {
-      const double now = node::monotonicSeconds();
+      const double now = bus::monotonicSeconds();
       if (state_watchdog.check(now)) {
         // No estimate: nothing is commanded (the lowlevel's RATE_CMD timeout takes over).
-        bus.setState(node::ProcessState::kFailsafe);
+        bus.setState(bus::ProcessState::kFailsafe);
       }
       state_report.update(state_watchdog, now);
     }

@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "sdlqr/common/channels.hpp"
-#include "sdlqr/common/cli.hpp"
-#include "sdlqr/common/config.hpp"
+#include "sdlqr/messages/channels.hpp"
+#include "sdlqr/config/cli.hpp"
+#include "sdlqr/config/config.hpp"
 #include "sdlqr/estimator/estimator.hpp"
-#include "sdlqr/node/convert.hpp"
-#include "sdlqr/node/node.hpp"
+#include "sdlqr/bus/convert.hpp"
+#include "sdlqr/bus/node.hpp"
 
 namespace {
 
@@ -30,7 +30,7 @@ constexpr int kVioQueueCapacity = 4;
 // Mirrors the library's counters into the heartbeat, adding only what changed since last time.
 class CounterBridge {
  public:
-  explicit CounterBridge(sdlqr::node::Node& node) : node_(node) {
+  explicit CounterBridge(sdlqr::bus::Node& node) : node_(node) {
     for (int i = 0; i < sdlqr::estimator::kRejectionCount; ++i) {
       reject_ids_.push_back(node.counters().add(sdlqr::estimator::counterName(static_cast<Rejection>(i))));
     }
@@ -62,24 +62,24 @@ class CounterBridge {
   }
 
  private:
-  sdlqr::node::Node& node_;
+  sdlqr::bus::Node& node_;
   EstimatorCounters seen_;
-  std::vector<sdlqr::node::Counters::Id> reject_ids_;
-  sdlqr::node::Counters::Id fused_id_ = 0;
-  sdlqr::node::Counters::Id init_id_ = 0;
-  sdlqr::node::Counters::Id clock_reset_id_ = 0;
-  sdlqr::node::Counters::Id vio_reset_id_ = 0;
-  sdlqr::node::Counters::Id clipping_id_ = 0;
-  sdlqr::node::Counters::Id nan_output_id_ = 0;
+  std::vector<sdlqr::bus::Counters::Id> reject_ids_;
+  sdlqr::bus::Counters::Id fused_id_ = 0;
+  sdlqr::bus::Counters::Id init_id_ = 0;
+  sdlqr::bus::Counters::Id clock_reset_id_ = 0;
+  sdlqr::bus::Counters::Id vio_reset_id_ = 0;
+  sdlqr::bus::Counters::Id clipping_id_ = 0;
+  sdlqr::bus::Counters::Id nan_output_id_ = 0;
 };
 
-sdlqr::node::ProcessState processStateOf(sdlqr::EstimatorStatus status) {
+sdlqr::bus::ProcessState processStateOf(sdlqr::EstimatorStatus status) {
   switch (status) {
-    case sdlqr::EstimatorStatus::kOk: return sdlqr::node::ProcessState::kRunning;
-    case sdlqr::EstimatorStatus::kVioTimeout: return sdlqr::node::ProcessState::kDegraded;
+    case sdlqr::EstimatorStatus::kOk: return sdlqr::bus::ProcessState::kRunning;
+    case sdlqr::EstimatorStatus::kVioTimeout: return sdlqr::bus::ProcessState::kDegraded;
     case sdlqr::EstimatorStatus::kInitializing: break;
   }
-  return sdlqr::node::ProcessState::kStarting;
+  return sdlqr::bus::ProcessState::kStarting;
 }
 
 }  // namespace
@@ -105,13 +105,13 @@ int main(int argc, char** argv) {
     }
     Estimator estimator(params);
 
-    sdlqr::node::Node node("sdlqr-estimator", options);
+    sdlqr::bus::Node node("sdlqr-estimator", options);
     CounterBridge counters(node);
 
     node.subscribe<sdlqr::imu_t>(
         sdlqr::channel::kImu,
         [&](const sdlqr::imu_t& msg) {
-          const sdlqr::ImuSample sample = sdlqr::node::fromLcm(msg);
+          const sdlqr::ImuSample sample = sdlqr::bus::fromLcm(msg);
           const auto estimate = estimator.onImu(sample);
           counters.sync(estimator.counters());
           if (!estimate) return;
@@ -121,13 +121,13 @@ int main(int argc, char** argv) {
             counters.countNonFiniteOutput();
             return;
           }
-          node.publish(sdlqr::channel::kStateEstimate, sdlqr::node::toLcm(*estimate));
+          node.publish(sdlqr::channel::kStateEstimate, sdlqr::bus::toLcm(*estimate));
         },
         kImuQueueCapacity, kImuBudget);
     node.subscribe<sdlqr::vio_pose_t>(
         sdlqr::channel::kVioPose,
         [&](const sdlqr::vio_pose_t& msg) {
-          estimator.onVio(sdlqr::node::fromLcm(msg));
+          estimator.onVio(sdlqr::bus::fromLcm(msg));
           counters.sync(estimator.counters());
         },
         kVioQueueCapacity);

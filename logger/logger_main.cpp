@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "sdlqr/common/cli.hpp"
+#include "sdlqr/config/cli.hpp"
 #include "sdlqr/logger/channel_types.hpp"
 #include "sdlqr/logger/log_export.hpp"
 #include "sdlqr/logger/log_naming.hpp"
 #include "sdlqr/logger/recorder.hpp"
-#include "sdlqr/node/node.hpp"
+#include "sdlqr/bus/node.hpp"
 
 namespace {
 
@@ -74,15 +74,15 @@ std::string logPath(const std::string& out, const std::string& dir, const std::s
 }
 
 struct RecorderCounters {
-  sdlqr::node::Counters::Id written, bytes, overflow, write_errors, flushes, max_depth;
+  sdlqr::bus::Counters::Id written, bytes, overflow, write_errors, flushes, max_depth;
 };
 
-void setCounter(sdlqr::node::Counters& counters, sdlqr::node::Counters::Id id, int64_t value) {
+void setCounter(sdlqr::bus::Counters& counters, sdlqr::bus::Counters::Id id, int64_t value) {
   counters.increment(id, value - counters.value(id));
 }
 
-void publishStats(sdlqr::node::Node& node, const RecorderCounters& ids, const sdlqr::logger::RecorderStats& s) {
-  sdlqr::node::Counters& c = node.counters();
+void publishStats(sdlqr::bus::Node& node, const RecorderCounters& ids, const sdlqr::logger::RecorderStats& s) {
+  sdlqr::bus::Counters& c = node.counters();
   const int64_t new_errors = s.write_errors - c.value(ids.write_errors);
   for (int64_t i = 0; i < new_errors; ++i) node.countError();
   setCounter(c, ids.written, s.written);
@@ -92,7 +92,7 @@ void publishStats(sdlqr::node::Node& node, const RecorderCounters& ids, const sd
   setCounter(c, ids.flushes, s.flushes);
   setCounter(c, ids.max_depth, s.max_queue_depth);
   if (s.write_errors > 0) {
-    node.setState(sdlqr::node::ProcessState::kDegraded);
+    node.setState(sdlqr::bus::ProcessState::kDegraded);
     node.setLastError(s.last_error);
   }
 }
@@ -125,12 +125,12 @@ int runRecord(int argc, const char* const* argv) {
   const std::string pattern = !channels.empty() ? channels : (process.vehicle.empty() ? ".*" : process.vehicle + "/.*");
   checkChannelRegex(pattern);
 
-  sdlqr::node::Node node(kProgram, process);
+  sdlqr::bus::Node node(kProgram, process);
   sdlqr::logger::RecorderOptions options;
   options.path = logPath(out, dir, scenario);
   sdlqr::logger::Recorder recorder(options);
 
-  sdlqr::node::Counters& counters = node.counters();
+  sdlqr::bus::Counters& counters = node.counters();
   const RecorderCounters ids{counters.add("logger.written"),      counters.add("logger.bytes"),
                              counters.add("logger.queue_overflow"), counters.add("logger.write_errors"),
                              counters.add("logger.flushes"),      counters.add("logger.queue_max_depth")};
@@ -143,7 +143,7 @@ int runRecord(int argc, const char* const* argv) {
         if (peekUtime(channel, data, size, &utime) && utime > latest_utime) latest_utime = utime;
       },
       kRawQueueCapacity);
-  node.setState(sdlqr::node::ProcessState::kRunning);
+  node.setState(sdlqr::bus::ProcessState::kRunning);
   std::cout << kProgram << ": recording '" << pattern << "'" << (scenario.empty() ? "" : " (scenario " + scenario + ")")
             << " to " << recorder.path() << std::endl;
 

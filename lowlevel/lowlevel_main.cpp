@@ -6,17 +6,17 @@
 #include <chrono>
 #include <string>
 
-#include "sdlqr/common/cli.hpp"
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/params.hpp"
-#include "sdlqr/common/validate.hpp"
-#include "sdlqr/common/watchdog.hpp"
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/config/cli.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/math/lqr_params.hpp"
+#include "sdlqr/health/validate.hpp"
+#include "sdlqr/health/watchdog.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/lowlevel/bodyrate_loop.hpp"
 #include "sdlqr/lowlevel/param_check.hpp"
-#include "sdlqr/node/convert.hpp"
-#include "sdlqr/node/node.hpp"
-#include "sdlqr/node/watchdog_report.hpp"
+#include "sdlqr/bus/convert.hpp"
+#include "sdlqr/bus/node.hpp"
+#include "sdlqr/bus/watchdog_report.hpp"
 
 using namespace sdlqr;
 
@@ -24,7 +24,7 @@ namespace {
 
 // Loop counters that are not message rejections, mirrored into HEARTBEAT by their increase.
 struct EventCounter {
-  node::Counters::Id id;
+  bus::Counters::Id id;
   const int64_t* value;
   int64_t reported = 0;
 };
@@ -51,13 +51,13 @@ int main(int argc, char** argv) {
     lowlevel::BodyrateLoop loop(vehicle, params, gravity);
     const FaultParams faults = FaultParams::load(config.child("faults"));
 
-    node::Node bus("sdlqr-lowlevel", options);
-    node::Counters& counters = bus.counters();
-    std::array<node::Counters::Id, lowlevel::kImuRejectCount> imu_reject_ids{};
+    bus::Node bus("sdlqr-lowlevel", options);
+    bus::Counters& counters = bus.counters();
+    std::array<bus::Counters::Id, lowlevel::kImuRejectCount> imu_reject_ids{};
     for (int i = 1; i < lowlevel::kImuRejectCount; ++i) {
       imu_reject_ids[i] = counters.add(std::string("reject.imu.") + toString(static_cast<lowlevel::ImuReject>(i)));
     }
-    std::array<node::Counters::Id, lowlevel::kRateCommandRejectCount> rate_reject_ids{};
+    std::array<bus::Counters::Id, lowlevel::kRateCommandRejectCount> rate_reject_ids{};
     for (int i = 1; i < lowlevel::kRateCommandRejectCount; ++i) {
       rate_reject_ids[i] =
           counters.add(std::string("reject.rate_cmd.") + toString(static_cast<lowlevel::RateCommandReject>(i)));
@@ -71,8 +71,8 @@ int main(int argc, char** argv) {
     // loop in IMU time (lowlevel.rate_cmd_timeout, the failsafe) and mirrored here on wall time.
     Watchdog imu_watchdog(faults.lowlevel_imu_timeout_s);
     Watchdog rate_watchdog(params.rate_cmd_timeout);
-    node::WatchdogReport imu_report(counters, "imu");
-    node::WatchdogReport rate_report(counters, "rate_cmd");
+    bus::WatchdogReport imu_report(counters, "imu");
+    bus::WatchdogReport rate_report(counters, "rate_cmd");
     const ValidationLimits limits;
     // COMMAND and PARAMS are rare and each one changes the flight: a replayed old one (same or
     // older utime and seq) or one from the future is refused.
@@ -92,15 +92,15 @@ int main(int argc, char** argv) {
 
     motor_cmd_t motor_msg;
     bus.subscribe<imu_t>(channel::kImu, [&](const imu_t& msg) {
-      const MotorCommand command = loop.step(node::fromLcm(msg));
+      const MotorCommand command = loop.step(bus::fromLcm(msg));
       const lowlevel::ImuReject reason = loop.lastImuReject();
       if (reason != lowlevel::ImuReject::kNone) {
         bus.countRejected(imu_reject_ids[static_cast<size_t>(reason)]);
         return;
       }
-      imu_watchdog.feed(node::monotonicSeconds());
+      imu_watchdog.feed(bus::monotonicSeconds());
       imu_utime = command.utime;
-      motor_msg = node::toLcm(command);
+      motor_msg = bus::toLcm(command);
       bus.publish(channel::kMotorCommand, motor_msg);
       bus.setSimTime(command.utime);
       for (EventCounter& event : events) {
@@ -109,19 +109,19 @@ int main(int argc, char** argv) {
           event.reported = *event.value;
         }
       }
-      bus.setState(command.mode == MotorMode::kFailsafe ? node::ProcessState::kFailsafe : node::ProcessState::kRunning);
+      bus.setState(command.mode == MotorMode::kFailsafe ? bus::ProcessState::kFailsafe : bus::ProcessState::kRunning);
     }, 64, std::chrono::microseconds(1000));  // a step longer than the IMU period is a missed deadline
     bus.subscribe<rate_cmd_t>(channel::kRateCommand, [&](const rate_cmd_t& msg) {
-      const lowlevel::RateCommandReject reason = loop.setRateCommand(node::fromLcm(msg));
+      const lowlevel::RateCommandReject reason = loop.setRateCommand(bus::fromLcm(msg));
       if (reason != lowlevel::RateCommandReject::kNone) {
         bus.countRejected(rate_reject_ids[static_cast<size_t>(reason)]);
         return;
       }
-      rate_watchdog.feed(node::monotonicSeconds());
+      rate_watchdog.feed(bus::monotonicSeconds());
     }, 1);
     int64_t last_command_seq = -1;
     bus.subscribe<command_t>(channel::kCommand, [&](const command_t& msg) {
-      const Command command = node::fromLcm(msg);
+      const Command command = bus::fromLcm(msg);
       if (validate(command, limits) != RejectReason::kNone) {
         bus.countRejected(command_reject_id);
         return;
@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
       loop.handleCommand(command);  // a refused arm is counted by the loop ("arm.refused")
     }, 16);
     bus.subscribe<params_t>(channel::kParams, [&](const params_t& msg) {
-      const ParamsUpdate update = node::fromLcm(msg);
+      const ParamsUpdate update = bus::fromLcm(msg);
       if (validate(update, limits) != RejectReason::kNone ||
           params_order.offer(update.utime, update.seq, imu_utime) != RejectReason::kNone) {
         bus.countRejected(params_reject_id);
@@ -149,9 +149,9 @@ int main(int argc, char** argv) {
 
     const int spin_ms = std::max(1, static_cast<int>(faults.lowlevel_imu_timeout_s * 1e3 / 4));
     while (bus.spin(spin_ms)) {
-      const double now = node::monotonicSeconds();
+      const double now = bus::monotonicSeconds();
       // Without IMU samples nothing can be computed or sent: the state says so.
-      if (imu_watchdog.check(now)) bus.setState(node::ProcessState::kFailsafe);
+      if (imu_watchdog.check(now)) bus.setState(bus::ProcessState::kFailsafe);
       rate_watchdog.check(now);
       imu_report.update(imu_watchdog, now);
       rate_report.update(rate_watchdog, now);

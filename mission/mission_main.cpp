@@ -4,12 +4,12 @@
 #include <cstdio>
 #include <iostream>
 
-#include "sdlqr/common/cli.hpp"
+#include "sdlqr/config/cli.hpp"
 #include "sdlqr/mission/command_resender.hpp"
 #include "sdlqr/mission/mission_player.hpp"
 #include "sdlqr/mission/trajectory_request.hpp"
-#include "sdlqr/node/convert.hpp"
-#include "sdlqr/node/node.hpp"
+#include "sdlqr/bus/convert.hpp"
+#include "sdlqr/bus/node.hpp"
 
 using namespace sdlqr;
 
@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
       return 0;
     }
 
-    node::Node bus("sdlqr-mission", options);
+    bus::Node bus("sdlqr-mission", options);
     mission::MissionPlayer player(scenario);
     mission::CommandResender resender(static_cast<int64_t>(resend_interval * 1e6));
     int64_t now_utime = -1;
@@ -114,13 +114,13 @@ int main(int argc, char** argv) {
                  scenario.events.size(), scenario.duration);
     auto last_clock = std::chrono::steady_clock::now();
     int64_t last_seen_utime = -1;
-    bus.setState(node::ProcessState::kStarting);
+    bus.setState(bus::ProcessState::kStarting);
     while (bus.spin(20)) {
       const auto wall_now = std::chrono::steady_clock::now();
       if (now_utime != last_seen_utime) {
         last_seen_utime = now_utime;
         last_clock = wall_now;
-        bus.setState(node::ProcessState::kRunning);
+        bus.setState(bus::ProcessState::kRunning);
       } else if (std::chrono::duration<double>(wall_now - last_clock).count() > no_clock_timeout) {
         std::fprintf(stderr, "sdlqr-mission: no IMU for %.0f s: is sdlqr-sim running on this bus?\n",
                      no_clock_timeout);
@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
             Command command = event->command;
             command.utime = now_utime;
             command.seq = command_seq++;
-            bus.publish(channel::kCommand, node::toLcm(command));
+            bus.publish(channel::kCommand, bus::toLcm(command));
             resender.sent(command);
             break;
           }
@@ -145,14 +145,14 @@ int main(int argc, char** argv) {
             disturbance.utime = now_utime;
             disturbance.start_utime = now_utime;
             disturbance.seq = disturbance_seq++;
-            bus.publish(channel::kDisturbance, node::toLcm(disturbance));
+            bus.publish(channel::kDisturbance, bus::toLcm(disturbance));
             break;
           }
           case mission::ScenarioEvent::Kind::kParams: {
             ParamsUpdate params = event->params;
             params.utime = now_utime;
             params.seq = params_seq++;
-            bus.publish(channel::kParams, node::toLcm(params));
+            bus.publish(channel::kParams, bus::toLcm(params));
             break;
           }
           case mission::ScenarioEvent::Kind::kTrajectory: {
@@ -160,12 +160,12 @@ int main(int argc, char** argv) {
             trajectory.utime = now_utime;
             trajectory.start_utime = now_utime;
             trajectory.seq = trajectory_seq++;
-            bus.publish(channel::kTrajectory, node::toLcm(trajectory));
+            bus.publish(channel::kTrajectory, bus::toLcm(trajectory));
             break;
           }
         }
       }
-      if (const Command* resend = resender.due(now_utime)) bus.publish(channel::kCommand, node::toLcm(*resend));
+      if (const Command* resend = resender.due(now_utime)) bus.publish(channel::kCommand, bus::toLcm(*resend));
       if (player.finished(now_utime)) {
         finished = true;
         break;

@@ -10,11 +10,11 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "sdlqr/common/cli.hpp"
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/validate.hpp"
-#include "sdlqr/node/convert.hpp"
-#include "sdlqr/node/node.hpp"
+#include "sdlqr/config/cli.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/health/validate.hpp"
+#include "sdlqr/bus/convert.hpp"
+#include "sdlqr/bus/node.hpp"
 #include "sdlqr/sim/simulator.hpp"
 
 namespace sdlqr {
@@ -63,7 +63,7 @@ bool waitReadable(int fd, Clock::duration timeout) {
 }
 
 // Handles messages as they arrive until the deadline, so a MOTOR_CMD reaches the next step.
-void serviceBusUntil(node::Node& node, Clock::time_point deadline) {
+void serviceBusUntil(bus::Node& node, Clock::time_point deadline) {
   const int fd = node.lcm().getFileno();
   while (node.running()) {
     const auto remaining = deadline - Clock::now();
@@ -80,26 +80,26 @@ int run(int argc, char** argv) {
   if (options.seed >= 0) params.seed = options.seed;
   sim::Simulator simulator(vehicle, params);
 
-  node::Node node("sdlqr-sim", options.process);
+  bus::Node node("sdlqr-sim", options.process);
   auto& counters = node.counters();
   // Counter ids indexed by fault value.
   static_assert(static_cast<size_t>(sim::MotorCommandFault::kMode) < 8);
   static_assert(static_cast<size_t>(sim::DisturbanceFault::kQueueFull) < 8);
-  std::array<node::Counters::Id, 8> motor_reject{};
+  std::array<bus::Counters::Id, 8> motor_reject{};
   for (sim::MotorCommandFault f : sim::kAllMotorCommandFaults) {
     motor_reject[static_cast<size_t>(f)] = counters.add(sim::counterName(f));
   }
-  std::array<node::Counters::Id, 8> disturbance_reject{};
+  std::array<bus::Counters::Id, 8> disturbance_reject{};
   for (sim::DisturbanceFault f : sim::kAllDisturbanceFaults) {
     disturbance_reject[static_cast<size_t>(f)] = counters.add(sim::counterName(f));
   }
-  const node::Counters::Id disturbances_accepted = counters.add("disturbance.accepted");
-  const node::Counters::Id crashes = counters.add("sim.crash");
+  const bus::Counters::Id disturbances_accepted = counters.add("disturbance.accepted");
+  const bus::Counters::Id crashes = counters.add("sim.crash");
   // Replayed or forged times: a motor command older than the last applied one, or stamped ahead
   // of the simulation clock, is not the lowlevel's answer to the current IMU sample.
-  const node::Counters::Id motor_backwards = counters.add("reject.motor_cmd.time_backwards");
-  const node::Counters::Id motor_future = counters.add("reject.motor_cmd.time_future");
-  const node::Counters::Id disturbance_order = counters.add("reject.disturbance.order");
+  const bus::Counters::Id motor_backwards = counters.add("reject.motor_cmd.time_backwards");
+  const bus::Counters::Id motor_future = counters.add("reject.motor_cmd.time_future");
+  const bus::Counters::Id disturbance_order = counters.add("reject.disturbance.order");
   TimeGate motor_time(0);
   OrderGate disturbance_gate;
 
@@ -110,7 +110,7 @@ int run(int argc, char** argv) {
       return;
     }
     motor_time.accept(m.utime);
-    const sim::MotorCommandFault fault = simulator.setMotorCommand(node::fromLcm(m));
+    const sim::MotorCommandFault fault = simulator.setMotorCommand(bus::fromLcm(m));
     if (fault != sim::MotorCommandFault::kNone) node.countRejected(motor_reject[static_cast<size_t>(fault)]);
   }, 1);
   // Every disturbance request matters, so they queue rather than replace each other.
@@ -119,7 +119,7 @@ int run(int argc, char** argv) {
       node.countRejected(disturbance_order);
       return;
     }
-    const sim::DisturbanceFault fault = simulator.addDisturbance(node::fromLcm(m));
+    const sim::DisturbanceFault fault = simulator.addDisturbance(bus::fromLcm(m));
     if (fault == sim::DisturbanceFault::kNone) {
       counters.increment(disturbances_accepted);
     } else {
@@ -136,7 +136,7 @@ int run(int argc, char** argv) {
   int64_t anchor_step = simulator.stepCount();
   int64_t deadline_misses = 0;
   bool crash_reported = false;
-  node.setState(node::ProcessState::kRunning);
+  node.setState(bus::ProcessState::kRunning);
   node.setSimTime(simulator.utime());
   node.publishHeartbeat();
 
@@ -158,9 +158,9 @@ int run(int argc, char** argv) {
 
     const sim::StepOutput out = simulator.step();
     node.setSimTime(simulator.utime());
-    if (out.imu) node.publish(channel::kImu, node::toLcm(*out.imu));
-    if (out.vio) node.publish(channel::kVioPose, node::toLcm(*out.vio));
-    if (out.truth) node.publish(channel::kSimTruth, node::toLcm(*out.truth));
+    if (out.imu) node.publish(channel::kImu, bus::toLcm(*out.imu));
+    if (out.vio) node.publish(channel::kVioPose, bus::toLcm(*out.vio));
+    if (out.truth) node.publish(channel::kSimTruth, bus::toLcm(*out.truth));
     if (simulator.crashed() && !crash_reported) {
       crash_reported = true;
       counters.increment(crashes);

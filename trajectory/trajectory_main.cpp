@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "sdlqr/common/cli.hpp"
-#include "sdlqr/common/params.hpp"
+#include "sdlqr/config/cli.hpp"
+#include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/trajectory/feasibility.hpp"
 #include "sdlqr/trajectory/paper_cases.hpp"
 #include "sdlqr/trajectory/params.hpp"

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::controller {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::controller {
 

@@ -2,8 +2,8 @@
 
 #include <stdexcept>
 
-#include "sdlqr/common/lqr.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/lqr.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/state_prediction.hpp"
 
 namespace sdlqr::controller {

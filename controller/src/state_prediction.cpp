@@ -1,6 +1,6 @@
 #include "sdlqr/controller/state_prediction.hpp"
 
-#include "sdlqr/common/model.hpp"
+#include "sdlqr/math/model.hpp"
 
 namespace sdlqr::controller {
 

@@ -2,7 +2,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::estimator {
 

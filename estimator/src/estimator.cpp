@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::estimator {
 

@@ -1,6 +1,6 @@
 #include "sdlqr/logger/channel_types.hpp"
 
-#include "sdlqr/common/channels.hpp"
+#include "sdlqr/messages/channels.hpp"
 
 namespace sdlqr::logger {
 

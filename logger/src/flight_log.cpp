@@ -4,10 +4,10 @@
 
 #include "lcm_decode.hpp"
 #include "sdlqr/logger/decode.hpp"
-#include "sdlqr/common/channels.hpp"
+#include "sdlqr/messages/channels.hpp"
 #include "sdlqr/logger/channel_types.hpp"
 #include "sdlqr/logger/log_reader.hpp"
-#include "sdlqr/node/convert.hpp"
+#include "sdlqr/bus/convert.hpp"
 
 namespace sdlqr::logger {
 
@@ -15,7 +15,7 @@ namespace {
 
 template <class LcmType>
 auto toPlain(const LcmType& m) {
-  return node::fromLcm(m);
+  return bus::fromLcm(m);
 }
 HeartbeatRecord toPlain(const heartbeat_t& m) { return toHeartbeatRecord(m); }
 

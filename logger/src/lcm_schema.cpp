@@ -5,7 +5,7 @@
 #include <set>
 #include <sstream>
 
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::logger {
 

@@ -13,7 +13,7 @@
 #include "sdlqr/logger/generated/lcm_csv_rows.hpp"
 #include "sdlqr/logger/log_naming.hpp"
 #include "sdlqr/logger/log_reader.hpp"
-#include "sdlqr/node/convert.hpp"
+#include "sdlqr/bus/convert.hpp"
 
 namespace sdlqr::logger {
 
@@ -25,10 +25,10 @@ namespace fs = std::filesystem;
 template <class LcmType>
 void collect(const LcmType&, const std::string&, int64_t, MetricsInput&) {}
 void collect(const gains_t& m, const std::string& channel, int64_t, MetricsInput& input) {
-  input.gains[channel].push_back(node::fromLcm(m));
+  input.gains[channel].push_back(bus::fromLcm(m));
 }
 void collect(const rate_cmd_t& m, const std::string& channel, int64_t, MetricsInput& input) {
-  input.rate_commands[channel].push_back(node::fromLcm(m));
+  input.rate_commands[channel].push_back(bus::fromLcm(m));
 }
 void collect(const heartbeat_t& m, const std::string& channel, int64_t receive_utime, MetricsInput& input) {
   HeartbeatSeries& series = input.heartbeats[channel];

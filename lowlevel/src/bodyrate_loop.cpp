@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/lowlevel/low_pass.hpp"
 
 namespace sdlqr::lowlevel {

@@ -5,7 +5,7 @@
 
 #include <Eigen/Geometry>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/lowlevel/param_check.hpp"
 
 namespace sdlqr::lowlevel {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::sim {
 

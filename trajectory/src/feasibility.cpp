@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::trajectory {
 

@@ -13,7 +13,7 @@ log="$work/flight.lcmlog"
 "$root/scripts/launch" --build "$build" --log "$log" "$scenario" > "$work/launch.out" 2>&1 &
 launcher=$!
 sleep 7  # airborne and settled at 1 m
-"$build/faults/sdlqr-fuzz-publisher" --duration 10 --rate 1000 --seed 5 > "$work/fuzz.out" 2>&1
+"$build/bin/sdlqr-fuzz-publisher" --duration 10 --rate 1000 --seed 5 > "$work/fuzz.out" 2>&1
 fuzz_status=$?
 wait "$launcher"
 launch_status=$?
@@ -22,7 +22,7 @@ cat "$work/fuzz.out"
 echo "fuzz_flight: fuzz publisher exit $fuzz_status, launcher exit $launch_status"
 # The fuzzed channels are in the log too: hover error from SIM_TRUTH (not fuzzed) over the fuzz
 # window and 3 s after it (the stack starts ~0.5 s before simulation time 0).
-"$build/faults/sdlqr-faultcheck" "$log" --hover 5,20,0,0,1 --max-hover-error 0.1 \
+"$build/bin/sdlqr-faultcheck" "$log" --hover 5,20,0,0,1 --max-hover-error 0.1 \
   --require reject.size,reject.decode,reject.nonfinite,reject.range,reject.time_backwards,fuzz.sent.replayed
 check_status=$?
 [ "$fuzz_status" -eq 0 ] && [ "$launch_status" -eq 0 ] && [ "$check_status" -eq 0 ]

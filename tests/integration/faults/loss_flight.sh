@@ -15,6 +15,6 @@ launch_status=$?
 grep -E '^launch:.*(ended|crash|killed)' "$work/launch.out"
 echo "loss_flight: launcher exit $launch_status"
 # Hover from 5 s (take-off settled) until the landing command at 28 s.
-"$build/faults/sdlqr-faultcheck" "$log" --hover 5,27.5,0,0,1 --max-hover-error 0.1 --require fault.dropped,fault.delayed
+"$build/bin/sdlqr-faultcheck" "$log" --hover 5,27.5,0,0,1 --max-hover-error 0.1 --require fault.dropped,fault.delayed
 check_status=$?
 [ "$launch_status" -eq 0 ] && [ "$check_status" -eq 0 ]

@@ -9,11 +9,11 @@ build="$1" work="$2" scenario="$3" name="$4" kill_after="$5" down_for="$6"
 shift 6
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
 case "$name" in
-  gains|controller) binary="$build/controller/sdlqr-$name" ;;
-  estimator) binary="$build/estimator/sdlqr-estimator" ;;
+  gains|controller) binary="$build/bin/sdlqr-$name" ;;
+  estimator) binary="$build/bin/sdlqr-estimator" ;;
   *) echo "process_outage: unknown process '$name'"; exit 2 ;;
 esac
-config="$("$build/mission/sdlqr-mission" --describe "$scenario" | sed -n 's/^vehicle=//p')"
+config="$("$build/bin/sdlqr-mission" --describe "$scenario" | sed -n 's/^vehicle=//p')"
 [ -n "$config" ] || { echo "process_outage: cannot read the scenario"; exit 2; }
 rm -rf "$work"
 mkdir -p "$work"
@@ -43,6 +43,6 @@ grep -E '^launch:.*(ended|crash|killed)' "$work/launch.out"
 echo "process_outage: kill -9 $name at wall $kill_us us, restarted $(( (restart_us - kill_us) / 1000 )) ms later;" \
      "launcher exit $launch_status, restarted $name alive to the end: $restarted_alive"
 # The figures stay in the work folder (check.out) after ctest, which shows output only on failure.
-"$build/faults/sdlqr-faultcheck" "$log" "--$name-outage" "$kill_us,$restart_us" "$@" | tee "$work/check.out"
+"$build/bin/sdlqr-faultcheck" "$log" "--$name-outage" "$kill_us,$restart_us" "$@" | tee "$work/check.out"
 check_status=${PIPESTATUS[0]}
 [ "$launch_status" -eq 0 ] && [ "$restarted_alive" -eq 1 ] && [ "$check_status" -eq 0 ]

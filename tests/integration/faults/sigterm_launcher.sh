@@ -36,6 +36,6 @@ for pid in "${pids[@]}"; do
 done
 echo "sigterm_launcher: launcher exit $launch_status (143 expected), slowest process ${worst} ms (limit 1000 ms)"
 grep -q "ignored SIGTERM" "$work/launch.out" && { echo "a process ignored SIGTERM"; exit 1; }
-"$build/faults/sdlqr-faultcheck" "$log" --complete
+"$build/bin/sdlqr-faultcheck" "$log" --complete
 check_status=$?
 [ "$launch_status" -eq 143 ] && [ "$worst" -le 1000 ] && [ "$check_status" -eq 0 ]

@@ -19,11 +19,11 @@
 #include <thread>
 #include <vector>
 
-#include "sdlqr/common/channels.hpp"
-#include "sdlqr/common/cli.hpp"
+#include "sdlqr/messages/channels.hpp"
+#include "sdlqr/config/cli.hpp"
 #include "sdlqr/logger/flight_log.hpp"
-#include "sdlqr/node/convert.hpp"
-#include "sdlqr/node/node.hpp"
+#include "sdlqr/bus/convert.hpp"
+#include "sdlqr/bus/node.hpp"
 
 namespace {
 
@@ -92,8 +92,8 @@ int publish(int argc, const char* const* argv) {
   parser.parseOrExit(argc, argv);
   if (published_path.empty() || rate_hz <= 0.0) throw std::invalid_argument("need --published FILE and --rate > 0");
 
-  node::Node node("logger_test_peer", process);
-  node.setState(node::ProcessState::kRunning);
+  bus::Node node("logger_test_peer", process);
+  node.setState(bus::ProcessState::kRunning);
   std::vector<Published> published;
   auto note = [&](std::string_view base, int64_t seq, int64_t utime) {
     published.push_back({node.channel(base), seq, utime});
@@ -105,18 +105,18 @@ int publish(int argc, const char* const* argv) {
     if (!node.spin(0)) break;
     if (duration_s > 0.0 && std::chrono::steady_clock::now() - start >= std::chrono::duration<double>(duration_s)) break;
     const int64_t utime = wallUtime();
-    node.publish(channel::kImu, node::toLcm(imuFor(tick, utime)));
+    node.publish(channel::kImu, bus::toLcm(imuFor(tick, utime)));
     note(channel::kImu, tick, utime);
     if (tick % 4 == 0) {
-      node.publish(channel::kStateEstimate, node::toLcm(stateFor(tick / 4, utime)));
+      node.publish(channel::kStateEstimate, bus::toLcm(stateFor(tick / 4, utime)));
       note(channel::kStateEstimate, tick / 4, utime);
     }
     if (tick % 5 == 0) {
-      node.publish(channel::kRateCommand, node::toLcm(rateFor(tick / 5, utime)));
+      node.publish(channel::kRateCommand, bus::toLcm(rateFor(tick / 5, utime)));
       note(channel::kRateCommand, tick / 5, utime);
     }
     if (tick % 50 == 0) {
-      node.publish(channel::kGains, node::toLcm(gainsFor(tick / 50, utime)));
+      node.publish(channel::kGains, bus::toLcm(gainsFor(tick / 50, utime)));
       note(channel::kGains, tick / 50, utime);
     }
   }
@@ -128,8 +128,8 @@ int publish(int argc, const char* const* argv) {
 
 template <class T>
 bool equalEncoding(const T& a, const T& b) {
-  const auto la = node::toLcm(a);
-  const auto lb = node::toLcm(b);
+  const auto la = bus::toLcm(a);
+  const auto lb = bus::toLcm(b);
   std::vector<uint8_t> ea(static_cast<size_t>(la.getEncodedSize()));
   std::vector<uint8_t> eb(static_cast<size_t>(lb.getEncodedSize()));
   la.encode(ea.data(), 0, static_cast<int>(ea.size()));
@@ -216,7 +216,7 @@ int check(int argc, const char* const* argv) {
     } else {
       std::cout << "  sdlqr-logger heartbeats: " << count << ", last state " << logger::processStateName(last->state)
                 << ", received " << last->received << ", dropped " << last->dropped << "\n";
-      if (last->state != static_cast<int8_t>(node::ProcessState::kStopping) || last->dropped != 0) {
+      if (last->state != static_cast<int8_t>(bus::ProcessState::kStopping) || last->dropped != 0) {
         std::cerr << "FAIL sdlqr-logger's last heartbeat is not a clean STOPPING one\n";
         ok = false;
       }

@@ -10,9 +10,9 @@ build="$1" work="$2" scenario="$3"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
 rm -rf "$work" && mkdir -p "$work"
 
-"$build/inspect/sdlqr-top" --plain --duration 13 >"$work/top.out" 2>"$work/top.err" &
+"$build/bin/sdlqr-top" --plain --duration 13 >"$work/top.out" 2>"$work/top.err" &
 top_pid=$!
-"$build/logger/sdlqr-logger" record --out "$work/killed.lcmlog" >"$work/killed.out" 2>&1 &
+"$build/bin/sdlqr-logger" record --out "$work/killed.lcmlog" >"$work/killed.out" 2>&1 &
 killed_pid=$!
 (
   sleep 8

@@ -19,5 +19,5 @@ done
 launch_status=$?
 echo "fly_and_check: launcher exit code $launch_status"
 [ "$launch_status" -eq 0 ] || exit 1
-"$build/analysis/sdlqr-analyze" "$log" --scenario "$scenario" "${vehicle_args[@]+"${vehicle_args[@]}"}" \
+"$build/bin/sdlqr-analyze" "$log" --scenario "$scenario" "${vehicle_args[@]+"${vehicle_args[@]}"}" \
   --json "$work/report.json"

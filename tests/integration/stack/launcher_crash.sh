@@ -12,7 +12,7 @@ launcher=$!
 sleep 4
 # Only this launcher's children: other tests may fly their own stacks at the same time.
 children=$(pgrep -P "$launcher" | tr '\n' ' ')
-victim=$(pgrep -P "$launcher" -f "controller/sdlqr-controller" | head -1)
+victim=$(pgrep -P "$launcher" -f "bin/sdlqr-controller" | head -1)
 [ -n "$victim" ] || { echo "controller not running"; cat "$work/launch.out"; exit 1; }
 kill -9 "$victim"
 start_ms=$(date +%s%3N)

@@ -28,7 +28,7 @@ fi
 result=0
 for v in 1 2; do
   echo "== QUAD$v"
-  "$build/analysis/sdlqr-analyze" "$work/quad$v.lcmlog" --vehicle "QUAD$v" \
+  "$build/bin/sdlqr-analyze" "$work/quad$v.lcmlog" --vehicle "QUAD$v" \
     --scenario "$here/two_vehicles_quad$v.yaml" --json "$work/quad$v.json" || result=1
   # No process of this vehicle may have rejected a message: another vehicle's messages on its
   # channels would be rejected as out of order or counted as sequence gaps.

@@ -9,8 +9,8 @@
 
 #include "allocation_counter.hpp"
 #include "sanitized_build.hpp"
-#include "sdlqr/common/lqr.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/lqr.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 
 namespace sdlqr {

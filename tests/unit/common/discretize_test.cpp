@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "sdlqr/common/discretize.hpp"
-#include "sdlqr/common/kernel_isa.hpp"
-#include "sdlqr/common/lqr.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/discretize.hpp"
+#include "sdlqr/math/kernel_isa.hpp"
+#include "sdlqr/math/lqr.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr {
 namespace {

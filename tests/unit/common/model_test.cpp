@@ -1,12 +1,12 @@
-// The analytic Jacobians of eq. (16)-(23), as derived in common/src/model.cpp, against central
+// The analytic Jacobians of eq. (16)-(23), as derived in common/math/src/model.cpp, against central
 // finite differences of f at random states and inputs (unit and non-unit quaternions).
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "sdlqr/common/model.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/model.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr {
 namespace {

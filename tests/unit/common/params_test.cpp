@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "sdlqr/common/params.hpp"
+#include "sdlqr/math/lqr_params.hpp"
 
 namespace sdlqr {
 namespace {

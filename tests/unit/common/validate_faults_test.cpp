@@ -5,9 +5,9 @@
 
 #include <iostream>
 
-#include "sdlqr/common/lqr.hpp"
-#include "sdlqr/common/validate.hpp"
-#include "sdlqr/common/watchdog.hpp"
+#include "sdlqr/math/lqr.hpp"
+#include "sdlqr/health/validate.hpp"
+#include "sdlqr/health/watchdog.hpp"
 
 namespace sdlqr {
 namespace {

@@ -27,15 +27,15 @@ namespace fs = std::filesystem;
 // Which executables read which section (their main's ::load calls).
 const std::map<std::string, std::vector<std::string>>& readers() {
   static const std::map<std::string, std::vector<std::string>> table{
-      {"vehicle", {"sim/sdlqr-sim", "lowlevel/sdlqr-lowlevel"}},
-      {"lqr", {"controller/sdlqr-controller", "controller/sdlqr-gains", "lowlevel/sdlqr-lowlevel", "mission/sdlqr-mission"}},
-      {"sim", {"sim/sdlqr-sim"}},
-      {"lowlevel", {"lowlevel/sdlqr-lowlevel"}},
-      {"trajectory", {"mission/sdlqr-mission"}},
-      {"estimator", {"estimator/sdlqr-estimator"}},
-      {"faults", {"controller/sdlqr-controller", "controller/sdlqr-gains", "lowlevel/sdlqr-lowlevel"}},
-      {"controller", {"controller/sdlqr-controller"}},
-      {"gains", {"controller/sdlqr-gains"}},
+      {"vehicle", {"bin/sdlqr-sim", "bin/sdlqr-lowlevel"}},
+      {"lqr", {"bin/sdlqr-controller", "bin/sdlqr-gains", "bin/sdlqr-lowlevel", "bin/sdlqr-mission"}},
+      {"sim", {"bin/sdlqr-sim"}},
+      {"lowlevel", {"bin/sdlqr-lowlevel"}},
+      {"trajectory", {"bin/sdlqr-mission"}},
+      {"estimator", {"bin/sdlqr-estimator"}},
+      {"faults", {"bin/sdlqr-controller", "bin/sdlqr-gains", "bin/sdlqr-lowlevel"}},
+      {"controller", {"bin/sdlqr-controller"}},
+      {"gains", {"bin/sdlqr-gains"}},
   };
   return table;
 }
@@ -262,7 +262,7 @@ std::vector<Case> buildScenarioCases() {
     std::vector<std::string> leaves, maps;
     collectScenarioLeaves(root, "", leaves, maps);
     auto add = [&](const std::string& what, const std::string& key, const YAML::Node& changed) {
-      cases.push_back({safeName(std::string(file) + "_" + key + "_" + what), key, "mission/sdlqr-mission",
+      cases.push_back({safeName(std::string(file) + "_" + key + "_" + what), key, "bin/sdlqr-mission",
                        emit(changed), "", true});
     };
     for (const std::string& key : leaves) {
@@ -310,7 +310,7 @@ RunResult run(const std::string& executable, const std::string& config_path, boo
   if (scenario) {
     command += " " + quoted(config_path);
   } else {
-    if (executable == "mission/sdlqr-mission") command += " " + quoted(SDLQR_SCENARIO_FILE);
+    if (executable == "bin/sdlqr-mission") command += " " + quoted(SDLQR_SCENARIO_FILE);
     command += " --config " + quoted(config_path);
   }
   command += " > /dev/null 2> " + quoted(stderr_path);

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "sdlqr/common/lqr.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/lqr.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/control_law.hpp"
 
 namespace sdlqr::controller {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "allocation_counter.hpp"
-#include "sdlqr/common/quaternion.hpp"
-#include "sdlqr/controller/gain_scheduler.hpp"
+#include "sdlqr/math/quaternion.hpp"
+#include "sdlqr/gains/gain_scheduler.hpp"
 #include "sdlqr/controller/state_dependent_lqr.hpp"
 #include "sdlqr/trajectory/paper_cases.hpp"
 #include "sdlqr/trajectory/sampling.hpp"
@@ -37,7 +37,7 @@ Command command(CommandType type, const Vec3& position) {
 TEST(ControllerAllocation, TicksAndSolvesAllocateNothing) {
   const LqrParams lqr;
   StateDependentLqr controller(lqr, ControllerParams{});
-  GainScheduler scheduler(lqr, 10.0);
+  gains::GainScheduler scheduler(lqr, 10.0);
   StateDependentLqr::Tick tick;
   controller.onStateEstimate(estimateAt(0, Vec3::Zero()), tick);
   controller.handleCommand(command(CommandType::kTakeoff, Vec3(0, 0, 1)));

@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/reference_generator.hpp"
 
 namespace sdlqr::controller {

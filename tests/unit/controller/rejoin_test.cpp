@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/reference_generator.hpp"
 #include "sdlqr/controller/state_dependent_lqr.hpp"
 

@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "sdlqr/common/lqr.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/lqr.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/state_dependent_lqr.hpp"
 
 namespace sdlqr::controller {

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/state_prediction.hpp"
 
 namespace sdlqr::controller {

@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/estimator/error_state_ekf.hpp"
 
 namespace sdlqr::estimator {

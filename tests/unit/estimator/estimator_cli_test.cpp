@@ -17,7 +17,7 @@ struct ProcessRun {
 };
 
 ProcessRun runProcess(const std::string& args) {
-  const std::string command = std::string(SDLQR_BINARY_DIR) + "/estimator/sdlqr-estimator " + args + " 2>&1";
+  const std::string command = std::string(SDLQR_BINARY_DIR) + "/bin/sdlqr-estimator " + args + " 2>&1";
   ProcessRun run;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return run;

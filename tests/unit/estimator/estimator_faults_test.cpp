@@ -8,7 +8,7 @@
 #include <limits>
 
 #include "estimator_run.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/estimator/estimator.hpp"
 
 namespace sdlqr::estimator::test {

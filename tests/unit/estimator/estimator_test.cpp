@@ -9,7 +9,7 @@
 #include <Eigen/Cholesky>
 
 #include "estimator_run.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/estimator/estimator.hpp"
 
 namespace sdlqr::estimator::test {

@@ -12,7 +12,7 @@
 
 #include "estimator_run.hpp"
 #include "landing_trajectory.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/estimator/estimator.hpp"
 
 namespace sdlqr::estimator::test {

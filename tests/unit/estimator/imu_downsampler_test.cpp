@@ -3,7 +3,7 @@
 #include <iostream>
 #include <vector>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/estimator/imu_downsampler.hpp"
 
 namespace sdlqr::estimator {

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <map>
 
-#include "sdlqr/common/channels.hpp"
+#include "sdlqr/messages/channels.hpp"
 #include "sdlqr/logger/channel_types.hpp"
 #include "sdlqr/logger/csv.hpp"
 #include "sdlqr/logger/decode.hpp"
@@ -15,7 +15,7 @@
 #include "sdlqr/logger/generated/lcm_csv_rows.hpp"
 #include "sdlqr/logger/log_export.hpp"
 #include "sdlqr/logger/log_reader.hpp"
-#include "sdlqr/node/convert.hpp"
+#include "sdlqr/bus/convert.hpp"
 #include "test_support.hpp"
 
 namespace sdlqr::logger {
@@ -193,22 +193,22 @@ Flight makeFlight() {
     s.utime = 1000 * i;
     s.seq = i;
     s.gyro = Vec3(0.01 * i, -0.5, 1.5);
-    f.events.push_back({"QUAD1/IMU", encode(node::toLcm(s)), receive += 1000});
+    f.events.push_back({"QUAD1/IMU", encode(bus::toLcm(s)), receive += 1000});
     ++f.imu;
     if (i % 4 == 0) {
       StateEstimate e;
       e.utime = s.utime;
       e.seq = i / 4;
       e.position = Vec3(1.0, 2.0, 0.001 * i);
-      f.events.push_back({"QUAD1/STATE_EST", encode(node::toLcm(e)), receive + 300});
-      f.events.push_back({"QUAD2/STATE_EST", encode(node::toLcm(e)), receive + 400});
+      f.events.push_back({"QUAD1/STATE_EST", encode(bus::toLcm(e)), receive + 300});
+      f.events.push_back({"QUAD2/STATE_EST", encode(bus::toLcm(e)), receive + 400});
     }
     if (i % 100 == 0) {
       GainSet g;
       g.utime = s.utime;
       g.seq = f.gains++;
       g.solve_us = 11.0 + i;
-      f.events.push_back({"QUAD1/GAINS", encode(node::toLcm(g)), receive + 500});
+      f.events.push_back({"QUAD1/GAINS", encode(bus::toLcm(g)), receive + 500});
     }
   }
   heartbeat_t hb{};
@@ -284,7 +284,7 @@ TEST(FlightLog, UnprefixedVehicleIsTheDefault) {
   ScratchDir dir("unprefixed");
   ImuSample s;
   s.seq = 5;
-  writeLog(dir / "u.lcmlog", {{"IMU", encode(node::toLcm(s)), kStart}, {"QUAD1/IMU", encode(node::toLcm(s)), kStart}});
+  writeLog(dir / "u.lcmlog", {{"IMU", encode(bus::toLcm(s)), kStart}, {"QUAD1/IMU", encode(bus::toLcm(s)), kStart}});
   const FlightLog log = FlightLog::load((dir / "u.lcmlog").string());
   ASSERT_EQ(log.imu.size(), 1u);
   EXPECT_EQ(log.imu[0].seq, 5);

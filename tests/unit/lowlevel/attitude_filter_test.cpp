@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/lowlevel/attitude_filter.hpp"
 #include "sdlqr/lowlevel/failsafe.hpp"
 #include "sdlqr/lowlevel/ground_detector.hpp"

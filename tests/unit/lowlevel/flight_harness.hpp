@@ -8,7 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "quad_plant.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/lowlevel/bodyrate_loop.hpp"
 
 namespace sdlqr::test {

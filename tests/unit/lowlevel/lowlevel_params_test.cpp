@@ -9,8 +9,8 @@
 #include <fstream>
 #include <string>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/lowlevel/lowlevel_params.hpp"
 
 namespace sdlqr::lowlevel {
@@ -81,7 +81,7 @@ TEST(LowlevelParams, IdleThrustMustSuitTheAirframe) {
 
 int runExecutable(const std::string& arguments) {
   const std::string command =
-      std::string(SDLQR_BINARY_DIR) + "/lowlevel/sdlqr-lowlevel " + arguments + " > /dev/null 2>&1";
+      std::string(SDLQR_BINARY_DIR) + "/bin/sdlqr-lowlevel " + arguments + " > /dev/null 2>&1";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }

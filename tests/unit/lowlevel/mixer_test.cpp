@@ -8,7 +8,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/lowlevel/mixer.hpp"
 
 namespace sdlqr::lowlevel {

@@ -10,9 +10,9 @@
 
 #include <Eigen/Geometry>
 
-#include "sdlqr/common/messages.hpp"
-#include "sdlqr/common/quaternion.hpp"
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/messages/messages.hpp"
+#include "sdlqr/math/quaternion.hpp"
+#include "sdlqr/math/vehicle.hpp"
 
 namespace sdlqr::test {
 

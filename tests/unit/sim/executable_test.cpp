@@ -17,7 +17,7 @@ struct ProcessResult {
 };
 
 ProcessResult runSim(const std::string& arguments) {
-  const std::string command = std::string(SDLQR_BINARY_DIR) + "/sim/sdlqr-sim " + arguments + " 2>&1";
+  const std::string command = std::string(SDLQR_BINARY_DIR) + "/bin/sdlqr-sim " + arguments + " 2>&1";
   ProcessResult run;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe) return run;

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/sim/sim_params.hpp"
 
 namespace sdlqr::sim {

@@ -4,7 +4,7 @@
 
 #include <Eigen/LU>  // inverse
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/sim/simulator.hpp"
 
 namespace sdlqr::sim::test {

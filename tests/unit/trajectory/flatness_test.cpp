@@ -4,8 +4,8 @@
 #include <iostream>
 #include <random>
 
-#include "sdlqr/common/model.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/model.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/trajectory/flatness.hpp"
 #include "sdlqr/trajectory/paper_cases.hpp"
 

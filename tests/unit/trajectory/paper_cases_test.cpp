@@ -3,7 +3,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/trajectory/feasibility.hpp"
 #include "sdlqr/trajectory/paper_cases.hpp"
 #include "sdlqr/trajectory/sampling.hpp"

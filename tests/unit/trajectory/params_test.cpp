@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "sdlqr/common/params.hpp"
+#include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/trajectory/params.hpp"
 #include "sdlqr/trajectory/trajectory_csv.hpp"
 #include "sdlqr/trajectory/waypoint_file.hpp"

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "allocation_counter.hpp"
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/trajectory/paper_cases.hpp"
 #include "sdlqr/trajectory/sampling.hpp"
 #include "sdlqr/trajectory/tracking.hpp"

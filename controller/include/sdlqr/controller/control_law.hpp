@@ -1,8 +1,8 @@
 #pragma once
 // The paper's feedback policy, eq. (15): u = u0 + K (x - x0), with the input limits of §III-B.
 
-#include "sdlqr/common/params.hpp"
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/math/lqr_params.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::controller {
 

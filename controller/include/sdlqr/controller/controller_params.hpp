@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr::controller {
 

@@ -7,7 +7,7 @@
 // restarted mid-flight while the lowlevel's failsafe holds the vehicle level) holds where the
 // vehicle is instead of idling; the mission's re-sent TAKEOFF or GOTO then restores the setpoint.
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/controller/controller_params.hpp"
 #include "sdlqr/trajectory/tracking.hpp"
 

@@ -4,8 +4,8 @@
 // body-rate and thrust command. K comes from the gain solver at 10 Hz; when it goes stale the last
 // valid K is kept and flagged, and after a timeout a hover K computed here takes over (DESIGN §7).
 
-#include "sdlqr/common/messages.hpp"
-#include "sdlqr/common/params.hpp"
+#include "sdlqr/messages/messages.hpp"
+#include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/controller/control_law.hpp"
 #include "sdlqr/controller/controller_params.hpp"
 #include "sdlqr/controller/reference_generator.hpp"

@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/estimator/error_state_ekf.hpp"
 #include "sdlqr/estimator/estimator_params.hpp"
 #include "sdlqr/estimator/gated_pose_run.hpp"

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <string>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/model.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/math/model.hpp"
 
 namespace sdlqr::estimator {
 

@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/estimator/nav_state.hpp"
 
 namespace sdlqr::estimator {

@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::estimator {
 

@@ -13,7 +13,7 @@
 // False when the bytes are not a valid message of that type (wrong type, truncated, trailing
 // bytes). The caller picks the type from the channel (channel_types.hpp).
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/logger/heartbeat_record.hpp"
 #include "sdlqr/logger/log_reader.hpp"
 

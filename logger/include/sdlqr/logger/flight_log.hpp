@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/logger/heartbeat_record.hpp"
 #include "sdlqr/logger/log_file_status.hpp"
 #include "sdlqr/logger/metrics.hpp"

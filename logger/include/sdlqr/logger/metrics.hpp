@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/logger/heartbeat_record.hpp"
 #include "sdlqr/logger/log_file_status.hpp"
 #include "sdlqr/logger/statistics.hpp"

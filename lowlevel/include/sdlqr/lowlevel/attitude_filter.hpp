@@ -10,8 +10,8 @@
 
 #include <string>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::lowlevel {
 

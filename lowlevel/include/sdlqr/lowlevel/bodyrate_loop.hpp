@@ -12,9 +12,9 @@
 #include <array>
 #include <cstdint>
 
-#include "sdlqr/common/messages.hpp"
-#include "sdlqr/common/model.hpp"
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/messages/messages.hpp"
+#include "sdlqr/math/model.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/lowlevel/attitude_filter.hpp"
 #include "sdlqr/lowlevel/failsafe.hpp"
 #include "sdlqr/lowlevel/ground_detector.hpp"

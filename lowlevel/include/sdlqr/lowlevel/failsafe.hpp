@@ -7,8 +7,8 @@
 
 #include <string>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/math/types.hpp"
 #include "sdlqr/lowlevel/ground_detector.hpp"
 
 namespace sdlqr::lowlevel {

@@ -6,8 +6,8 @@
 #include <limits>
 #include <string>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr::lowlevel {
 

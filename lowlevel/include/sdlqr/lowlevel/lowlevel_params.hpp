@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/lowlevel/attitude_filter.hpp"
 #include "sdlqr/lowlevel/failsafe.hpp"
 #include "sdlqr/lowlevel/ground_detector.hpp"

@@ -11,8 +11,8 @@
 
 #include <string>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/lowlevel/rate_control.hpp"
 
 namespace sdlqr::lowlevel {

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "sdlqr/common/config.hpp"
+#include "sdlqr/config/config.hpp"
 
 namespace sdlqr::lowlevel {
 

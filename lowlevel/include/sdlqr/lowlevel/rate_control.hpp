@@ -8,8 +8,8 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::lowlevel {
 

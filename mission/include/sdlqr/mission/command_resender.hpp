@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr::mission {
 

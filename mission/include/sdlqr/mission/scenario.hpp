@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr::mission {
 

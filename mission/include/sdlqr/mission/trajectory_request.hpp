@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "sdlqr/common/messages.hpp"
-#include "sdlqr/common/params.hpp"
+#include "sdlqr/messages/messages.hpp"
+#include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/mission/scenario.hpp"
 #include "sdlqr/trajectory/params.hpp"
 

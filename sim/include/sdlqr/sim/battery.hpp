@@ -4,8 +4,8 @@
 // thrust model was calibrated at `calibration_charge` in hover, so thrust_scale() is 1 there,
 // above 1 on a fuller pack and below 1 on an emptier one or under heavy load (paper §IV-B z offset).
 
-#include "sdlqr/common/types.hpp"
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/math/types.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/sim/sim_params.hpp"
 
 namespace sdlqr::sim {

@@ -6,7 +6,7 @@
 #include <array>
 #include <cstdint>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/sim/rigid_body.hpp"
 
 namespace sdlqr::sim {

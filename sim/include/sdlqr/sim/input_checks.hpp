@@ -2,8 +2,8 @@
 // Acceptance of the simulator's inputs. A malformed MOTOR_CMD or DISTURBANCE is dropped and
 // counted under the reason's counter name (DESIGN §7), never applied.
 
-#include "sdlqr/common/messages.hpp"
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/messages/messages.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/sim/sim_params.hpp"
 
 namespace sdlqr::sim {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::sim {
 

@@ -5,8 +5,8 @@
 
 #include <Eigen/Geometry>  // cross
 
-#include "sdlqr/common/quaternion.hpp"
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/math/quaternion.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::sim {
 

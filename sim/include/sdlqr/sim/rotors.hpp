@@ -3,8 +3,8 @@
 // the produced thrusts exert on the airframe (collective thrust, roll/pitch/yaw torques through
 // VehicleParams::effectiveness(), and linear rotor drag).
 
-#include "sdlqr/common/messages.hpp"
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/messages/messages.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/sim/rigid_body.hpp"
 
 namespace sdlqr::sim {

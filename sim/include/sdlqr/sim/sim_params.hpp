@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <string>
 
-#include "sdlqr/common/config.hpp"
-#include "sdlqr/common/model.hpp"
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/config/config.hpp"
+#include "sdlqr/math/model.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::sim {
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <optional>
 
-#include "sdlqr/common/messages.hpp"
-#include "sdlqr/common/vehicle.hpp"
+#include "sdlqr/messages/messages.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/sim/battery.hpp"
 #include "sdlqr/sim/disturbances.hpp"
 #include "sdlqr/sim/imu_model.hpp"

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/sim/random.hpp"
 #include "sdlqr/sim/sim_params.hpp"
 

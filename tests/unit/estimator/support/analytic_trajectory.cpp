@@ -4,7 +4,7 @@
 
 #include <Eigen/Geometry>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::estimator::test {
 

@@ -4,7 +4,7 @@
 // in over `ramp_time` (a C3 envelope, so acceleration and jerk, hence attitude and body rate, are
 // continuous). Attitude is the quadrotor's: body z along the required thrust, heading `yaw`.
 
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::estimator::test {
 

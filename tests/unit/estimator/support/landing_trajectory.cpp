@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "sdlqr/common/quaternion.hpp"
+#include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::estimator::test {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "analytic_trajectory.hpp"
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr::estimator::test {
 

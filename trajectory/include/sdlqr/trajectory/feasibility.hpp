@@ -12,8 +12,8 @@
 #include <limits>
 #include <string>
 
-#include "sdlqr/common/messages.hpp"
-#include "sdlqr/common/params.hpp"
+#include "sdlqr/messages/messages.hpp"
+#include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/trajectory/min_snap.hpp"
 
 namespace sdlqr::trajectory {

@@ -15,7 +15,7 @@
 // reference falls back to the last well-defined attitude (level at zero thrust) and zero rates,
 // and the feasibility check flags c < c_min long before.
 
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/math/types.hpp"
 
 namespace sdlqr::trajectory {
 

@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "sdlqr/common/types.hpp"
+#include "sdlqr/math/types.hpp"
 #include "sdlqr/trajectory/flatness.hpp"
 #include "sdlqr/trajectory/polynomial.hpp"
 

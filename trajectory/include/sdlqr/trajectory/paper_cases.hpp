@@ -14,7 +14,7 @@
 
 #include <vector>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/trajectory/min_snap.hpp"
 #include "sdlqr/trajectory/params.hpp"
 

@@ -2,7 +2,7 @@
 // From a min-snap polynomial to the sampled Trajectory the controller tracks (the paper samples
 // at dt = 0.1 s): each sample holds the flat reference state and feed-forward input.
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/trajectory/min_snap.hpp"
 
 namespace sdlqr::trajectory {

@@ -34,7 +34,7 @@
 
 #include <string>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/trajectory/validation.hpp"
 
 namespace sdlqr::trajectory {

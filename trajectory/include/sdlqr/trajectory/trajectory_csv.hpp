@@ -22,7 +22,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 #include "sdlqr/trajectory/validation.hpp"
 
 namespace sdlqr::trajectory {

@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "sdlqr/common/messages.hpp"
+#include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr::trajectory {
 

@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "sdlqr/common/config.hpp"
+#include "sdlqr/config/config.hpp"
 #include "sdlqr/trajectory/min_snap.hpp"
 
 namespace sdlqr::trajectory {

@@ -1,0 +1,234 @@
+#pragma once
+// The LCM side of every process: one bus connection, vehicle-prefixed channels, decoding with
+// reject counting, sequence-gap (drop) counting, queue capacity 1 for state and command
+// channels, HEARTBEAT once a second of wall time, and a stop flag set by SIGINT/SIGTERM.
+// Before decoding, every message's bytes are checked to hold exactly one complete encoding
+// (logger's generated, allocation-free walk), so a forged array length cannot allocate.
+// Optional seeded fault injection (drop, delay) on received messages, for tests: see
+// FaultInjection, enabled by the SDLQR_FAULTS environment variable or setFaultInjection().
+// Algorithm code never sees this header; mains hand plain structs (common/messages.hpp) on.
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <random>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "sdlqr/messages/channels.hpp"
+#include "sdlqr/config/cli.hpp"
+
+namespace sdlqr::bus {
+
+enum class ProcessState : int8_t { kStarting = 0, kRunning = 1, kDegraded = 2, kFailsafe = 3, kStopping = 4 };
+
+// Named counters reported in HEARTBEAT; registered once at start so counting never allocates.
+class Counters {
+ public:
+  using Id = int;
+  Id add(const std::string& name);
+  void increment(Id id, int64_t by = 1) { values_[static_cast<size_t>(id)] += by; }
+  // For gauges (a watchdog's age, an expired flag).
+  void set(Id id, int64_t value) { values_[static_cast<size_t>(id)] = value; }
+  int64_t value(Id id) const { return values_[static_cast<size_t>(id)]; }
+  const std::vector<std::string>& names() const { return names_; }
+  const std::vector<int64_t>& values() const { return values_; }
+
+ private:
+  std::vector<std::string> names_;
+  std::vector<int64_t> values_;
+};
+
+// The bytes hold exactly one complete encoding of T (walked without allocating); defined for
+// every type of lcmtypes/ in wire_fits.cpp.
+template <class T>
+bool encodingFits(const uint8_t* data, int64_t size);
+
+// Seeded loss and latency on every typed subscription of a process (the kernel here has no
+// netem). Spec text: "drop=0.1,delay_ms=0:5,seed=7" (any subset, comma-separated). Each received
+// message is dropped with probability `drop`, else delivered after a delay drawn uniformly from
+// [delay_min_ms, delay_max_ms]; a channel's messages keep their order (the delay is a queue's).
+// Raw (recorder) subscriptions are never faulted: the log shows what was sent.
+struct FaultInjection {
+  double drop = 0.0;           // [-] probability in [0, 1)
+  double delay_min_ms = 0.0;   // [ms]
+  double delay_max_ms = 0.0;   // [ms]
+  uint64_t seed = 1;
+  bool enabled() const { return drop > 0.0 || delay_max_ms > 0.0; }
+  // Throws std::invalid_argument naming the field on a bad spec.
+  static FaultInjection parse(const std::string& spec);
+};
+
+class Node {
+ public:
+  Node(std::string process, const ProcessOptions& options);
+  ~Node();
+  Node(const Node&) = delete;
+  Node& operator=(const Node&) = delete;
+
+  std::string channel(std::string_view base) const { return channel::name(vehicle_, base); }
+  lcm::LCM& lcm() { return *lcm_; }
+
+  // Decodes each message of `base` as T and calls handler(msg). A message that fails to decode
+  // is counted as rejected ("reject.decode") and never reaches the handler. Gaps in `seq` count
+  // as dropped. queue_capacity 1 keeps only the newest message for control channels. A handler
+  // that runs longer than a non-zero `budget` (wall time) counts as a deadline miss in HEARTBEAT.
+  template <class T>
+  void subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity = 1,
+                 std::chrono::microseconds budget = std::chrono::microseconds::zero());
+
+  // Undecoded messages of every channel whose full name matches the LCM regex `pattern` (no
+  // vehicle prefix is added): for recorders. Counted as received; `receive_utime` is LCM's
+  // wall-clock receive time [us].
+  using RawHandler =
+      std::function<void(const std::string& channel, const void* data, uint32_t size, int64_t receive_utime)>;
+  void subscribeRaw(const std::string& pattern, RawHandler handler, int queue_capacity);
+
+  // Encodes and publishes on the vehicle-prefixed channel.
+  template <class T>
+  void publish(std::string_view base, const T& msg);
+
+  // Replaces the fault injection read from SDLQR_FAULTS at construction (tests over memq://).
+  void setFaultInjection(const FaultInjection& faults);
+  const FaultInjection& faultInjection() const { return faults_; }
+
+  // Handles messages for up to timeout_ms and publishes HEARTBEAT when one is due.
+  // Returns false once SIGINT or SIGTERM has been received.
+  bool spin(int timeout_ms);
+  bool running() const;
+  // For a main that ends itself (e.g. a duration elapsed): publishes a last STOPPING heartbeat.
+  void shutdown();
+
+  // Heartbeat contents.
+  void setState(ProcessState state) { state_ = state; }
+  ProcessState state() const { return state_; }
+  void setSimTime(int64_t utime) { sim_utime_ = utime; }
+  void setLastError(const std::string& text) { last_error_ = text; }
+  Counters& counters() { return counters_; }
+  void countRejected(Counters::Id reason) {
+    ++rejected_;
+    counters_.increment(reason);
+  }
+  void countError() { ++errors_; }
+  void countDeadlineMiss() { ++deadline_misses_; }
+  // Messages lost by the process itself (e.g. a recorder's queue overflow), for HEARTBEAT dropped.
+  void countDropped(int64_t count) { dropped_ += count; }
+  int64_t received() const { return received_; }
+  int64_t rejected() const { return rejected_; }
+  int64_t dropped() const { return dropped_; }
+  int64_t deadlineMisses() const { return deadline_misses_; }
+  const std::string& process() const { return process_; }
+
+  void publishHeartbeat();
+
+ private:
+  struct SubscriptionBase {
+    virtual ~SubscriptionBase() = default;
+    virtual void onMessage(const void* data, uint32_t size) = 0;
+    Node* node = nullptr;
+    int64_t last_seq = -1;
+    std::chrono::steady_clock::duration budget{};  // zero: not timed
+    std::chrono::steady_clock::time_point last_due{};  // keeps a channel's delayed messages in order
+  };
+  template <class T>
+  struct TypedSubscription : SubscriptionBase {
+    std::function<void(const T&)> handler;
+    T message;  // decoded in place: fixed-size types never allocate
+    void onMessage(const void* data, uint32_t size) override {
+      ++node->received_;
+      if (!encodingFits<T>(static_cast<const uint8_t*>(data), size)) {
+        node->countRejected(node->reject_size_);
+        return;
+      }
+      if (message.decode(data, 0, static_cast<int>(size)) < 0) {
+        node->countRejected(node->reject_decode_);
+        return;
+      }
+      node->noteSequence(*this, message.seq);
+      if (budget == std::chrono::steady_clock::duration::zero()) {
+        handler(message);
+        return;
+      }
+      const auto start = std::chrono::steady_clock::now();
+      handler(message);
+      if (std::chrono::steady_clock::now() - start > budget) node->countDeadlineMiss();
+    }
+  };
+  struct RawSubscription {
+    Node* node = nullptr;
+    RawHandler handler;
+  };
+  // C callback: LCM's C++ wrapper would build a std::string of the channel for every message.
+  static void dispatch(const lcm_recv_buf_t* rbuf, const char* channel, void* sub);
+  static void dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub);
+  void noteSequence(SubscriptionBase& sub, int64_t seq);
+  void injectFault(SubscriptionBase& sub, const void* data, uint32_t size);
+  void deliverDueMessages();
+  int millisecondsToNextDue(int timeout_ms) const;
+  void addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity);
+  void publishRaw(const std::string& channel, const void* data, int size);
+  // Full channel name of a base name, built once: publishing then never allocates.
+  const std::string& publishChannel(std::string_view base);
+
+  std::string process_;
+  std::string vehicle_;
+  std::unique_ptr<lcm::LCM> lcm_;
+  std::vector<std::unique_ptr<SubscriptionBase>> subscriptions_;
+  std::vector<std::unique_ptr<RawSubscription>> raw_subscriptions_;
+  std::vector<uint8_t> encode_buffer_;
+  std::vector<std::pair<std::string, std::string>> publish_channels_;  // base -> prefixed
+  Counters counters_;
+  Counters::Id reject_decode_;
+  Counters::Id reject_size_;
+  struct DelayedMessage {
+    SubscriptionBase* sub = nullptr;
+    std::chrono::steady_clock::time_point due;
+    std::vector<uint8_t> bytes;
+  };
+  FaultInjection faults_;
+  std::mt19937_64 fault_rng_;
+  std::vector<DelayedMessage> delayed_;
+  std::vector<std::vector<uint8_t>> spare_buffers_;
+  Counters::Id fault_dropped_ = -1;
+  Counters::Id fault_delayed_ = -1;
+  ProcessState state_ = ProcessState::kStarting;
+  int64_t sim_utime_ = 0;
+  int64_t received_ = 0;
+  int64_t published_ = 0;
+  int64_t dropped_ = 0;
+  int64_t rejected_ = 0;
+  int64_t deadline_misses_ = 0;
+  int64_t errors_ = 0;
+  int64_t heartbeat_seq_ = 0;
+  std::string last_error_;
+  std::chrono::steady_clock::time_point next_heartbeat_;
+  std::chrono::steady_clock::time_point cpu_window_start_;
+  double cpu_seconds_at_window_start_ = 0.0;
+};
+
+template <class T>
+void Node::subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity,
+                     std::chrono::microseconds budget) {
+  auto sub = std::make_unique<TypedSubscription<T>>();
+  sub->handler = std::move(handler);
+  sub->budget = budget;
+  addSubscription(channel(base), std::move(sub), queue_capacity);
+}
+
+template <class T>
+void Node::publish(std::string_view base, const T& msg) {
+  const int size = msg.getEncodedSize();
+  if (static_cast<int>(encode_buffer_.size()) < size) encode_buffer_.resize(static_cast<size_t>(size));
+  if (msg.encode(encode_buffer_.data(), 0, size) < 0) {
+    countError();
+    setLastError("encode failed on " + std::string(base));
+    return;
+  }
+  publishRaw(publishChannel(base), encode_buffer_.data(), size);
+}
+
+}  // namespace sdlqr::bus

@@ -1,0 +1,310 @@
+#include "sdlqr/bus/node.hpp"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cctype>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <stdexcept>
+
+#include "sdlqr/heartbeat_t.hpp"
+#include "sdlqr/bus/watchdog_report.hpp"
+
+namespace sdlqr::bus {
+
+namespace {
+
+std::atomic<bool> g_stop_requested{false};
+
+void onStopSignal(int) { g_stop_requested.store(true); }
+
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+double parseNumber(const std::string& field, const std::string& text) {
+  size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size() || !std::isfinite(value)) {
+    throw std::invalid_argument("SDLQR_FAULTS: " + field + ": expected a number, got '" + text + "'");
+  }
+  return value;
+}
+
+}  // namespace
+
+FaultInjection FaultInjection::parse(const std::string& spec) {
+  FaultInjection f;
+  size_t start = 0;
+  while (start < spec.size()) {
+    size_t end = spec.find(',', start);
+    if (end == std::string::npos) end = spec.size();
+    const std::string item = spec.substr(start, end - start);
+    start = end + 1;
+    if (item.empty()) continue;
+    const size_t eq = item.find('=');
+    if (eq == std::string::npos) throw std::invalid_argument("SDLQR_FAULTS: '" + item + "': expected key=value");
+    const std::string key = item.substr(0, eq);
+    const std::string value = item.substr(eq + 1);
+    if (key == "drop") {
+      f.drop = parseNumber(key, value);
+      if (f.drop < 0.0 || f.drop >= 1.0) throw std::invalid_argument("SDLQR_FAULTS: drop: must be in [0, 1)");
+    } else if (key == "delay_ms") {
+      const size_t colon = value.find(':');
+      f.delay_min_ms = parseNumber(key, value.substr(0, colon));
+      f.delay_max_ms = colon == std::string::npos ? f.delay_min_ms : parseNumber(key, value.substr(colon + 1));
+      if (f.delay_min_ms < 0.0 || f.delay_max_ms < f.delay_min_ms || f.delay_max_ms > 10000.0) {
+        throw std::invalid_argument("SDLQR_FAULTS: delay_ms: expected MIN:MAX with 0 <= MIN <= MAX <= 10000");
+      }
+    } else if (key == "seed") {
+      const double seed = parseNumber(key, value);
+      if (seed < 0.0 || seed != std::floor(seed) || seed > 9e15) {
+        throw std::invalid_argument("SDLQR_FAULTS: seed: expected a non-negative integer");
+      }
+      f.seed = static_cast<uint64_t>(seed);
+    } else {
+      throw std::invalid_argument("SDLQR_FAULTS: unknown key '" + key + "' (drop, delay_ms, seed)");
+    }
+  }
+  return f;
+}
+
+Counters::Id Counters::add(const std::string& name) {
+  for (size_t i = 0; i < names_.size(); ++i) {
+    if (names_[i] == name) return static_cast<Id>(i);
+  }
+  names_.push_back(name);
+  values_.push_back(0);
+  return static_cast<Id>(names_.size() - 1);
+}
+
+Node::Node(std::string process, const ProcessOptions& options)
+    : process_(std::move(process)), vehicle_(options.vehicle) {
+  for (char c : vehicle_) {
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) {
+      throw std::invalid_argument("--vehicle: use letters, digits, '_' or '-' only, got '" + vehicle_ + "'");
+    }
+  }
+  lcm_ = std::make_unique<lcm::LCM>(options.lcm_url);
+  if (!lcm_->good()) {
+    throw std::runtime_error("cannot open LCM bus '" + (options.lcm_url.empty() ? std::string("default") : options.lcm_url) +
+                             "' (is multicast routed? see README, Troubleshooting)");
+  }
+  reject_decode_ = counters_.add("reject.decode");
+  reject_size_ = counters_.add("reject.size");
+  if (const char* spec = std::getenv("SDLQR_FAULTS"); spec != nullptr && spec[0] != '\0') {
+    setFaultInjection(FaultInjection::parse(spec));
+  }
+  struct sigaction action {};
+  action.sa_handler = onStopSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  encode_buffer_.resize(4096);
+  next_heartbeat_ = std::chrono::steady_clock::now();
+  cpu_window_start_ = next_heartbeat_;
+  cpu_seconds_at_window_start_ = processCpuSeconds();
+}
+
+Node::~Node() = default;
+
+void Node::dispatch(const lcm_recv_buf_t* rbuf, const char*, void* sub) {
+  auto* subscription = static_cast<SubscriptionBase*>(sub);
+  if (subscription->node->faults_.enabled()) {
+    subscription->node->injectFault(*subscription, rbuf->data, rbuf->data_size);
+    return;
+  }
+  subscription->onMessage(rbuf->data, rbuf->data_size);
+}
+
+void Node::setFaultInjection(const FaultInjection& faults) {
+  faults_ = faults;
+  // Each process draws its own sequence from the common seed.
+  fault_rng_.seed(faults.seed ^ std::hash<std::string>{}(process_));
+  if (faults.enabled() && fault_dropped_ < 0) {
+    fault_dropped_ = counters_.add("fault.dropped");
+    fault_delayed_ = counters_.add("fault.delayed");
+  }
+}
+
+void Node::injectFault(SubscriptionBase& sub, const void* data, uint32_t size) {
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  if (faults_.drop > 0.0 && uniform(fault_rng_) < faults_.drop) {
+    ++received_;
+    counters_.increment(fault_dropped_);
+    return;
+  }
+  const double delay_ms = faults_.delay_min_ms + (faults_.delay_max_ms - faults_.delay_min_ms) * uniform(fault_rng_);
+  const auto now = std::chrono::steady_clock::now();
+  auto due = now + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                       std::chrono::duration<double, std::milli>(delay_ms));
+  due = std::max(due, sub.last_due);
+  if (due <= now) {
+    sub.onMessage(data, size);
+    return;
+  }
+  sub.last_due = due;
+  counters_.increment(fault_delayed_);
+  DelayedMessage message;
+  message.sub = &sub;
+  message.due = due;
+  if (!spare_buffers_.empty()) {
+    message.bytes = std::move(spare_buffers_.back());
+    spare_buffers_.pop_back();
+  }
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  message.bytes.assign(bytes, bytes + size);
+  delayed_.push_back(std::move(message));
+}
+
+void Node::deliverDueMessages() {
+  if (delayed_.empty()) return;
+  const auto now = std::chrono::steady_clock::now();
+  // Insertion order is due order within each channel; channels do not wait for each other.
+  size_t kept = 0;
+  for (size_t i = 0; i < delayed_.size(); ++i) {
+    DelayedMessage& message = delayed_[i];
+    if (message.due <= now) {
+      message.sub->onMessage(message.bytes.data(), static_cast<uint32_t>(message.bytes.size()));
+      spare_buffers_.push_back(std::move(message.bytes));
+    } else {
+      if (kept != i) delayed_[kept] = std::move(message);
+      ++kept;
+    }
+  }
+  delayed_.resize(kept);
+}
+
+int Node::millisecondsToNextDue(int timeout_ms) const {
+  if (delayed_.empty()) return timeout_ms;
+  auto earliest = delayed_.front().due;
+  for (const DelayedMessage& message : delayed_) earliest = std::min(earliest, message.due);
+  const double wait_ms = std::chrono::duration<double, std::milli>(earliest - std::chrono::steady_clock::now()).count();
+  const int wait = std::max(0, static_cast<int>(std::ceil(wait_ms)));
+  return timeout_ms < 0 ? wait : std::min(timeout_ms, wait);
+}
+
+const std::string& Node::publishChannel(std::string_view base) {
+  for (const auto& [known_base, full] : publish_channels_) {
+    if (known_base == base) return full;
+  }
+  publish_channels_.emplace_back(std::string(base), channel(base));
+  return publish_channels_.back().second;
+}
+
+void Node::dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub) {
+  ++sub->node->received_;
+  sub->handler(channel, rbuf->data, rbuf->data_size, rbuf->recv_utime);
+}
+
+void Node::subscribeRaw(const std::string& pattern, RawHandler handler, int queue_capacity) {
+  auto sub = std::make_unique<RawSubscription>();
+  sub->node = this;
+  sub->handler = std::move(handler);
+  lcm::Subscription* handle = lcm_->subscribeFunction(pattern, &Node::dispatchRaw, sub.get());
+  if (queue_capacity > 0) handle->setQueueCapacity(queue_capacity);
+  raw_subscriptions_.push_back(std::move(sub));
+}
+
+void Node::addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity) {
+  sub->node = this;
+  // The channel is used as an exact name: escape regex characters LCM would interpret.
+  std::string pattern;
+  for (char c : channel) {
+    if (std::string_view(".[]()*+?^$|\\{}").find(c) != std::string_view::npos) pattern.push_back('\\');
+    pattern.push_back(c);
+  }
+  lcm_subscription_t* handle = lcm_subscribe(lcm_->getUnderlyingLCM(), pattern.c_str(), &Node::dispatch, sub.get());
+  if (!handle) throw std::runtime_error("cannot subscribe to " + channel);
+  if (queue_capacity > 0) lcm_subscription_set_queue_capacity(handle, queue_capacity);
+  subscriptions_.push_back(std::move(sub));
+}
+
+void Node::noteSequence(SubscriptionBase& sub, int64_t seq) {
+  // A forward jump is a loss; a backward jump is a publisher restart and starts a new count.
+  if (sub.last_seq >= 0 && seq > sub.last_seq + 1) dropped_ += seq - sub.last_seq - 1;
+  sub.last_seq = seq;
+}
+
+void Node::publishRaw(const std::string& channel, const void* data, int size) {
+  if (lcm_->publish(channel, data, static_cast<unsigned int>(size)) != 0) {
+    countError();
+    setLastError("publish failed on " + channel);
+    return;
+  }
+  ++published_;
+}
+
+bool Node::running() const { return !g_stop_requested.load(); }
+
+bool Node::spin(int timeout_ms) {
+  if (!running()) return false;
+  const int status = lcm_->handleTimeout(millisecondsToNextDue(timeout_ms));
+  if (status < 0 && running()) {
+    countError();
+    setLastError("LCM handle failed");
+  }
+  deliverDueMessages();
+  if (std::chrono::steady_clock::now() >= next_heartbeat_) publishHeartbeat();
+  return running();
+}
+
+void Node::shutdown() {
+  state_ = ProcessState::kStopping;
+  publishHeartbeat();
+}
+
+void Node::publishHeartbeat() {
+  const auto now = std::chrono::steady_clock::now();
+  next_heartbeat_ = now + std::chrono::seconds(1);
+  const double window = std::chrono::duration<double>(now - cpu_window_start_).count();
+  const double cpu_now = processCpuSeconds();
+  const double cpu_percent = window > 0.05 ? 100.0 * (cpu_now - cpu_seconds_at_window_start_) / window : 0.0;
+  if (window > 0.05) {
+    cpu_window_start_ = now;
+    cpu_seconds_at_window_start_ = cpu_now;
+  }
+
+  heartbeat_t hb;
+  hb.utime = sim_utime_;
+  hb.seq = heartbeat_seq_++;
+  hb.process = process_;
+  hb.pid = static_cast<int32_t>(getpid());
+  hb.state = static_cast<int8_t>(running() ? state_ : ProcessState::kStopping);
+  hb.received = received_;
+  hb.published = published_;
+  hb.dropped = dropped_;
+  hb.rejected = rejected_;
+  hb.deadline_misses = deadline_misses_;
+  hb.errors = errors_;
+  hb.cpu_percent = cpu_percent;
+  hb.num_counters = static_cast<int32_t>(counters_.names().size());
+  hb.counter_names = counters_.names();
+  hb.counter_values = counters_.values();
+  hb.last_error = last_error_;
+  publish(channel::kHeartbeat, hb);
+}
+
+}  // namespace sdlqr::bus
+
+namespace sdlqr::bus {
+
+double monotonicSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace sdlqr::bus

@@ -1,0 +1,127 @@
+#include "sdlqr/config/config.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace sdlqr {
+
+YAML::Node loadYamlFile(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw ConfigError(path, "cannot open file");
+  try {
+    YAML::Node root = YAML::Load(file);
+    if (root.IsNull()) return YAML::Node(YAML::NodeType::Map);
+    if (!root.IsMap()) throw ConfigError(path, "top level must be a mapping");
+    return root;
+  } catch (const YAML::Exception& e) {
+    std::ostringstream msg;
+    msg << "YAML syntax error at line " << e.mark.line + 1 << ", column " << e.mark.column + 1 << ": " << e.msg;
+    throw ConfigError(path, msg.str());
+  }
+}
+
+ConfigReader loadVehicleConfig(const std::string& path) {
+  if (path.empty()) return ConfigReader(YAML::Node(YAML::NodeType::Map), "");
+  ConfigReader root(loadYamlFile(path), "");
+  root.allowOnly({"vehicle", "lqr", "sim", "estimator", "lowlevel", "controller", "gains", "logger", "mission", "trajectory",
+                 "faults"});
+  return root;
+}
+
+ConfigReader::ConfigReader(YAML::Node node, std::string path) : node_(std::move(node)), path_(std::move(path)) {
+  if (node_ && !node_.IsNull() && !node_.IsMap()) throw ConfigError(path_.empty() ? "<root>" : path_, "must be a mapping");
+}
+
+bool ConfigReader::has(const std::string& key) const {
+  return node_ && node_.IsMap() && node_[key] && !node_[key].IsNull();
+}
+
+ConfigReader ConfigReader::child(const std::string& key) const {
+  if (!has(key)) return ConfigReader(YAML::Node(), keyPath(key));
+  return ConfigReader(node_[key], keyPath(key));
+}
+
+void ConfigReader::allowOnly(std::initializer_list<const char*> allowed) const {
+  if (!node_ || !node_.IsMap()) return;
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.as<std::string>();
+    bool known = false;
+    for (const char* name : allowed) known = known || key == name;
+    if (!known) throw ConfigError(keyPath(key), "unknown key");
+  }
+}
+
+namespace {
+
+double toFiniteDouble(const YAML::Node& node, const std::string& key) {
+  if (!node.IsScalar()) throw ConfigError(key, "expected a number");
+  double value = 0.0;
+  try {
+    value = node.as<double>();
+  } catch (const YAML::Exception&) {
+    throw ConfigError(key, "expected a number, got '" + node.Scalar() + "'");
+  }
+  if (!std::isfinite(value)) throw ConfigError(key, "must be finite");
+  return value;
+}
+
+}  // namespace
+
+void ConfigReader::read(const std::string& key, double& out) const {
+  if (!has(key)) return;
+  out = toFiniteDouble(node_[key], keyPath(key));
+}
+
+void ConfigReader::read(const std::string& key, int& out) const {
+  if (!has(key)) return;
+  const YAML::Node node = node_[key];
+  try {
+    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
+    out = node.as<int>();
+  } catch (const YAML::Exception&) {
+    throw ConfigError(keyPath(key), "expected an integer");
+  }
+}
+
+void ConfigReader::read(const std::string& key, long long& out) const {
+  if (!has(key)) return;
+  const YAML::Node node = node_[key];
+  try {
+    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
+    out = node.as<long long>();
+  } catch (const YAML::Exception&) {
+    throw ConfigError(keyPath(key), "expected an integer");
+  }
+}
+
+void ConfigReader::read(const std::string& key, bool& out) const {
+  if (!has(key)) return;
+  const YAML::Node node = node_[key];
+  try {
+    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
+    out = node.as<bool>();
+  } catch (const YAML::Exception&) {
+    throw ConfigError(keyPath(key), "expected true or false");
+  }
+}
+
+void ConfigReader::read(const std::string& key, std::string& out) const {
+  if (!has(key)) return;
+  const YAML::Node node = node_[key];
+  if (!node.IsScalar()) throw ConfigError(keyPath(key), "expected a string");
+  out = node.Scalar();
+}
+
+void ConfigReader::readVector(const std::string& key, double* out, int size) const {
+  if (!has(key)) return;
+  const YAML::Node node = node_[key];
+  const std::string name = keyPath(key);
+  if (!node.IsSequence()) throw ConfigError(name, "expected a list of " + std::to_string(size) + " numbers");
+  if (static_cast<int>(node.size()) != size) {
+    throw ConfigError(name, "expected " + std::to_string(size) + " numbers, got " + std::to_string(node.size()));
+  }
+  for (int i = 0; i < size; ++i) out[i] = toFiniteDouble(node[i], name + "[" + std::to_string(i) + "]");
+}
+
+}  // namespace sdlqr

@@ -1,0 +1,111 @@
+#pragma once
+// Message validation before any algorithm sees a message (DESIGN §7: "malformed or out-of-range
+// message: dropped, counted, never crashes, never reaches the controller"). Pure checks on the
+// plain structs; each rejection has a reason that processes count in HEARTBEAT as "reject.<name>".
+
+#include "sdlqr/messages/messages.hpp"
+
+namespace sdlqr {
+
+enum class RejectReason {
+  kNone = 0,
+  kNonFinite,       // NaN or Inf in a field
+  kQuaternionNorm,  // |q| far from 1
+  kOutOfRange,      // a value beyond physical or configured limits
+  kBadEnum,         // an enum field with an unknown value
+  kBadSize,         // array lengths inconsistent, too few or too many samples
+  kBadStatus,       // a result that says it failed (e.g. GAINS status != OK)
+  kTimeBackwards,   // utime older than the newest accepted on the channel
+  kTimeFuture,      // utime beyond the newest known simulation time plus a tolerance
+  kUnstable,        // a gain whose closed loop the receiver's own check finds not Schur stable
+  kCount
+};
+
+const char* counterName(RejectReason reason);  // "reject.nonfinite", ...
+
+// Limits a validator cannot know from the message alone.
+struct ValidationLimits {
+  double quaternion_norm_tolerance = 0.05;  // [-] accept 0.95 <= |q| <= 1.05
+  double max_position = 1000.0;             // [m] |p| per axis
+  double max_velocity = 50.0;               // [m/s]
+  double max_body_rate = 35.0;              // [rad/s] (2000 deg/s, a gyro's range)
+  double max_thrust = 60.0;                 // [m/s^2] mass-normalized
+  double max_gain = 1e4;                    // [-] |K_ij|
+  int max_trajectory_samples = 100000;
+};
+
+RejectReason validate(const StateEstimate& m, const ValidationLimits& limits);
+RejectReason validate(const GainSet& m, const ValidationLimits& limits);
+RejectReason validate(const RateCommand& m, const ValidationLimits& limits);
+RejectReason validate(const Reference& m, const ValidationLimits& limits);
+RejectReason validate(const Command& m, const ValidationLimits& limits);
+RejectReason validate(const ParamsUpdate& m, const ValidationLimits& limits);
+RejectReason validate(const Trajectory& m, const ValidationLimits& limits);
+
+// The receiver's own stability check of a GAINS message that passed validate(): the model
+// linearized at (x_lin, u_lin), discretized at dt, reduced to the 9-state tangent system, closed
+// with K; kUnstable unless every eigenvalue lies inside the circle of radius max_spectral_radius.
+// A rogue or corrupted K with finite, in-range entries is caught here. No heap allocation.
+RejectReason validateClosedLoop(const GainSet& m, double max_spectral_radius = 0.9999);
+// Spectral radius of that tangent closed loop (NaN when it cannot be formed), for tests and logs.
+double closedLoopSpectralRadius(const GainSet& m);
+
+// Rejects utimes that go backwards on one channel, and (when a clock is known) that lie further
+// than `future_tolerance_us` ahead of the newest simulation time seen by the process.
+class TimeGate {
+ public:
+  explicit TimeGate(int64_t future_tolerance_us = 1'000'000) : future_tolerance_us_(future_tolerance_us) {}
+  RejectReason check(int64_t utime, int64_t now_utime) const {
+    if (last_utime_ >= 0 && utime < last_utime_) return RejectReason::kTimeBackwards;
+    if (now_utime >= 0 && utime > now_utime + future_tolerance_us_) return RejectReason::kTimeFuture;
+    return RejectReason::kNone;
+  }
+  void accept(int64_t utime) { last_utime_ = utime; }
+  void reset() { last_utime_ = -1; }
+
+ private:
+  int64_t future_tolerance_us_;
+  int64_t last_utime_ = -1;
+};
+
+// For rare messages that each change the flight (COMMAND, PARAMS): one not after the last accepted
+// in (utime, seq) order is a replay (kTimeBackwards); one whose utime lies more than
+// future_tolerance_us ahead of the process's clock (when known, >= 0) is kTimeFuture.
+class OrderGate {
+ public:
+  explicit OrderGate(int64_t future_tolerance_us = 1'000'000) : future_tolerance_us_(future_tolerance_us) {}
+  RejectReason offer(int64_t utime, int64_t seq, int64_t now_utime) {
+    if (utime < last_utime_ || (utime == last_utime_ && seq <= last_seq_)) return RejectReason::kTimeBackwards;
+    if (now_utime >= 0 && utime > now_utime + future_tolerance_us_) return RejectReason::kTimeFuture;
+    last_utime_ = utime;
+    last_seq_ = seq;
+    return RejectReason::kNone;
+  }
+
+ private:
+  int64_t future_tolerance_us_;
+  int64_t last_utime_ = -1;
+  int64_t last_seq_ = -1;
+};
+
+// For the stream that is a process's clock (STATE_EST in the controller and the gain solver): a
+// utime not after the newest accepted is kTimeBackwards; a forward jump beyond max_jump_us is
+// kTimeFuture until `confirmations` messages in a row, each newer than the one before and within
+// max_jump_us of it, agree on the new time (a restarted estimator after a long gap). One forged
+// far-future message therefore cannot move the clock and lock out the real stream.
+class ClockGate {
+ public:
+  ClockGate(int64_t max_jump_us = 500'000, int confirmations = 5)
+      : max_jump_us_(max_jump_us), confirmations_(confirmations) {}
+  RejectReason offer(int64_t utime);
+  int64_t now() const { return last_utime_; }  // -1 before the first accepted message
+
+ private:
+  int64_t max_jump_us_;
+  int confirmations_;
+  int64_t last_utime_ = -1;
+  int64_t candidate_utime_ = -1;
+  int candidate_count_ = 0;
+};
+
+}  // namespace sdlqr

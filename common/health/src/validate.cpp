@@ -1,0 +1,173 @@
+#include "sdlqr/health/validate.hpp"
+
+#include <cmath>
+
+namespace sdlqr {
+
+namespace {
+
+template <class Derived>
+bool finite(const Eigen::MatrixBase<Derived>& m) {
+  return m.allFinite();
+}
+
+bool unitQuaternion(const Quat& q, const ValidationLimits& limits) {
+  return std::abs(q.norm() - 1.0) <= limits.quaternion_norm_tolerance;
+}
+
+bool stateInRange(const State& x, const ValidationLimits& limits) {
+  return position(x).cwiseAbs().maxCoeff() <= limits.max_position &&
+         velocity(x).norm() <= limits.max_velocity;
+}
+
+bool modeKnown(ReferenceMode mode) {
+  const auto v = static_cast<int8_t>(mode);
+  return v >= 0 && v <= 3;
+}
+
+}  // namespace
+
+const char* counterName(RejectReason reason) {
+  switch (reason) {
+    case RejectReason::kNone: return "reject.none";
+    case RejectReason::kNonFinite: return "reject.nonfinite";
+    case RejectReason::kQuaternionNorm: return "reject.quaternion";
+    case RejectReason::kOutOfRange: return "reject.range";
+    case RejectReason::kBadEnum: return "reject.enum";
+    case RejectReason::kBadSize: return "reject.size";
+    case RejectReason::kBadStatus: return "reject.status";
+    case RejectReason::kTimeBackwards: return "reject.time_backwards";
+    case RejectReason::kTimeFuture: return "reject.time_future";
+    case RejectReason::kUnstable: return "reject.unstable";
+    case RejectReason::kCount: break;
+  }
+  return "reject.unknown";
+}
+
+RejectReason validate(const StateEstimate& m, const ValidationLimits& limits) {
+  if (!finite(m.position) || !finite(m.orientation) || !finite(m.velocity) || !finite(m.body_rate) ||
+      !finite(m.gyro_bias) || !finite(m.accel_bias) || !finite(m.position_std) || !finite(m.attitude_std)) {
+    return RejectReason::kNonFinite;
+  }
+  const auto status = static_cast<int8_t>(m.status);
+  if (status < 0 || status > 2) return RejectReason::kBadEnum;
+  if (!unitQuaternion(m.orientation, limits)) return RejectReason::kQuaternionNorm;
+  if (!stateInRange(m.state(), limits) || m.body_rate.norm() > limits.max_body_rate || m.utime < 0) {
+    return RejectReason::kOutOfRange;
+  }
+  return RejectReason::kNone;
+}
+
+RejectReason validate(const GainSet& m, const ValidationLimits& limits) {
+  if (!finite(m.K) || !finite(m.x_lin) || !finite(m.u_lin) || !finite(m.q_diag) || !finite(m.r_diag) ||
+      !std::isfinite(m.dt)) {
+    return RejectReason::kNonFinite;
+  }
+  if (m.status != SolveStatus::kOk) return RejectReason::kBadStatus;
+  const auto method = static_cast<int8_t>(m.method);
+  if (method < 0 || method > 1) return RejectReason::kBadEnum;
+  if (!unitQuaternion(orientation(m.x_lin), limits)) return RejectReason::kQuaternionNorm;
+  if (m.K.cwiseAbs().maxCoeff() > limits.max_gain || !(m.dt > 0.0 && m.dt <= 1.0) || m.utime < 0) {
+    return RejectReason::kOutOfRange;
+  }
+  return RejectReason::kNone;
+}
+
+RejectReason validate(const RateCommand& m, const ValidationLimits& limits) {
+  if (!finite(m.body_rate) || !std::isfinite(m.thrust)) return RejectReason::kNonFinite;
+  const auto status = static_cast<int8_t>(m.gains_status);
+  if (status < 0 || status > 2) return RejectReason::kBadEnum;
+  if (m.body_rate.norm() > limits.max_body_rate || m.thrust < 0.0 || m.thrust > limits.max_thrust || m.utime < 0) {
+    return RejectReason::kOutOfRange;
+  }
+  return RejectReason::kNone;
+}
+
+RejectReason validate(const Reference& m, const ValidationLimits& limits) {
+  if (!finite(m.x) || !finite(m.u) || !std::isfinite(m.gamma)) return RejectReason::kNonFinite;
+  if (!modeKnown(m.mode)) return RejectReason::kBadEnum;
+  if (!unitQuaternion(orientation(m.x), limits)) return RejectReason::kQuaternionNorm;
+  if (!stateInRange(m.x, limits) || bodyRate(m.u).norm() > limits.max_body_rate || m.u[kThrust] < 0.0 ||
+      m.u[kThrust] > limits.max_thrust) {
+    return RejectReason::kOutOfRange;
+  }
+  return RejectReason::kNone;
+}
+
+RejectReason validate(const Command& m, const ValidationLimits& limits) {
+  if (!finite(m.position) || !std::isfinite(m.yaw)) return RejectReason::kNonFinite;
+  const auto command = static_cast<int8_t>(m.command);
+  if (command < static_cast<int8_t>(CommandType::kArm) || command > static_cast<int8_t>(CommandType::kLand)) {
+    return RejectReason::kBadEnum;
+  }
+  if (m.position.cwiseAbs().maxCoeff() > limits.max_position || std::abs(m.yaw) > 100.0) {
+    return RejectReason::kOutOfRange;
+  }
+  return RejectReason::kNone;
+}
+
+RejectReason validate(const ParamsUpdate& m, const ValidationLimits&) {
+  if (m.field_mask & ~(ParamsUpdate::kWeights | ParamsUpdate::kLimits | ParamsUpdate::kMass | ParamsUpdate::kTracking)) {
+    return RejectReason::kBadEnum;
+  }
+  if ((m.field_mask & ParamsUpdate::kWeights) && (!finite(m.q_diag) || !finite(m.r_diag))) {
+    return RejectReason::kNonFinite;
+  }
+  if ((m.field_mask & ParamsUpdate::kLimits) &&
+      (!std::isfinite(m.omega_max) || !std::isfinite(m.c_min) || !std::isfinite(m.c_max))) {
+    return RejectReason::kNonFinite;
+  }
+  if ((m.field_mask & ParamsUpdate::kMass) && !std::isfinite(m.mass)) return RejectReason::kNonFinite;
+  if ((m.field_mask & ParamsUpdate::kWeights) &&
+      (m.q_diag.minCoeff() < 0.0 || m.r_diag.minCoeff() <= 0.0 || m.q_diag.maxCoeff() > 1e8 ||
+       m.r_diag.maxCoeff() > 1e8)) {
+    return RejectReason::kOutOfRange;
+  }
+  if ((m.field_mask & ParamsUpdate::kLimits) &&
+      !(m.omega_max > 0.0 && m.omega_max <= 20.0 && m.c_min >= 0.0 && m.c_max > m.c_min && m.c_max <= 60.0)) {
+    return RejectReason::kOutOfRange;
+  }
+  if ((m.field_mask & ParamsUpdate::kMass) && !(m.mass > 0.0 && m.mass <= 100.0)) return RejectReason::kOutOfRange;
+  if ((m.field_mask & ParamsUpdate::kTracking) && m.tracking != ReferenceMode::kSpatial &&
+      m.tracking != ReferenceMode::kTemporal) {
+    return RejectReason::kBadEnum;
+  }
+  return RejectReason::kNone;
+}
+
+RejectReason validate(const Trajectory& m, const ValidationLimits& limits) {
+  if (m.samples.size() < 2 || static_cast<int>(m.samples.size()) > limits.max_trajectory_samples) {
+    return RejectReason::kBadSize;
+  }
+  if (m.tracking != ReferenceMode::kSpatial && m.tracking != ReferenceMode::kTemporal) return RejectReason::kBadEnum;
+  double previous_t = -1e300;
+  for (const TrajectorySample& s : m.samples) {
+    if (!std::isfinite(s.t) || !finite(s.x) || !finite(s.u)) return RejectReason::kNonFinite;
+    if (!unitQuaternion(orientation(s.x), limits)) return RejectReason::kQuaternionNorm;
+    if (s.t <= previous_t || !stateInRange(s.x, limits) || s.u[kThrust] < 0.0 || s.u[kThrust] > limits.max_thrust ||
+        bodyRate(s.u).norm() > limits.max_body_rate) {
+      return RejectReason::kOutOfRange;
+    }
+    previous_t = s.t;
+  }
+  return RejectReason::kNone;
+}
+
+RejectReason ClockGate::offer(int64_t utime) {
+  if (last_utime_ >= 0 && utime <= last_utime_) return RejectReason::kTimeBackwards;
+  if (last_utime_ < 0 || utime - last_utime_ <= max_jump_us_) {
+    last_utime_ = utime;
+    candidate_count_ = 0;
+    return RejectReason::kNone;
+  }
+  const bool continues_candidate =
+      candidate_count_ > 0 && utime > candidate_utime_ && utime - candidate_utime_ <= max_jump_us_;
+  candidate_count_ = continues_candidate ? candidate_count_ + 1 : 1;
+  candidate_utime_ = utime;
+  if (candidate_count_ < confirmations_) return RejectReason::kTimeFuture;
+  last_utime_ = utime;
+  candidate_count_ = 0;
+  return RejectReason::kNone;
+}
+
+}  // namespace sdlqr

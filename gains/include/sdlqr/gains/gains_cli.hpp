@@ -1,0 +1,26 @@
+#pragma once
+// The one-shot mode of sdlqr-gains: parse a linearization point from the command line, and
+// format one solve as a single JSON object. Kept out of main so that it is testable.
+
+#include <string>
+
+#include "sdlqr/math/lqr.hpp"
+#include "sdlqr/math/lqr_params.hpp"
+#include "sdlqr/math/types.hpp"
+
+namespace sdlqr::gains {
+
+// "px,py,pz,qw,qx,qy,qz,vx,vy,vz": exactly 10 finite numbers and a non-zero quaternion.
+// Throws std::invalid_argument with a one-line message naming `option`.
+State parseStateList(const std::string& text, const std::string& option);
+// "wx,wy,wz,c": exactly 4 finite numbers.
+Input parseInputList(const std::string& text, const std::string& option);
+
+const char* toString(SolveStatus status);
+
+// {"status", "method", "K" (4 rows of 10), "dt", "iterations", "solve_us", "residual", "x_lin",
+// "u_lin"}; doubles with 17 significant digits (they round-trip), non-finite numbers as null.
+std::string formatGainsJson(const State& x_lin, const Input& u_lin, const LqrParams& params, const LqrResult& result,
+                            double solve_us);
+
+}  // namespace sdlqr::gains

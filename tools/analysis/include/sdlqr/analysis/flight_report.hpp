@@ -1,0 +1,123 @@
+#pragma once
+// Scenario metrics of one flight, computed from its log (or from the in-process closed loop,
+// which fills the same FlightLog): how each reference jump settled (Fig. 5), how the vehicle
+// came back after each pull (Fig. 4), estimator accuracy against the simulator's truth, message
+// rates, solver and loop timing — and a pass/fail check for every criterion of the scenario.
+//
+// Positions are judged on SIM_TRUTH (where the vehicle really was), not on the estimate.
+
+#include <limits>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "sdlqr/analysis/path_tracking.hpp"
+#include "sdlqr/math/types.hpp"
+#include "sdlqr/logger/flight_log.hpp"
+#include "sdlqr/logger/statistics.hpp"
+#include "sdlqr/mission/scenario.hpp"
+
+namespace sdlqr::analysis {
+
+inline constexpr double kNotReached = std::numeric_limits<double>::quiet_NaN();
+
+// One held setpoint: after take-off or after a reference jump, until the next event.
+struct SetpointWindow {
+  std::string label;
+  bool is_jump = false;           // false for the hold after take-off
+  double start = 0.0;             // [s] simulation time of the command
+  double end = 0.0;               // [s] next event (or landing)
+  Vec3 from = Vec3::Zero();       // [m] previous setpoint
+  Vec3 to = Vec3::Zero();         // [m] setpoint held in the window
+  double size = 0.0;              // [m] |to - from|
+  double settle_time = kNotReached;  // [s] after start, error stays below the settle threshold
+  double overshoot = 0.0;         // [-] largest travel beyond `to` along the jump, over size
+  double steady_error = kNotReached;  // [m] mean error over the last hover_window of the window
+  double max_error_after_settle = kNotReached;  // [m]
+};
+
+struct PullWindow {
+  std::string label;
+  double start = 0.0;             // [s] disturbance start
+  double release = 0.0;           // [s] disturbance end
+  double end = 0.0;               // [s] next event
+  Vec3 force = Vec3::Zero();      // [N] world
+  Vec3 setpoint = Vec3::Zero();   // [m]
+  double max_deviation = 0.0;     // [m]
+  double return_time = kNotReached;  // [s] after release, error stays below the return threshold
+};
+
+struct EstimatorAccuracy {
+  int64_t samples = 0;
+  double position_rms = kNotReached;   // [m] airborne, |v| < 0.3 m/s (hover)
+  double attitude_rms_deg = kNotReached;
+  double position_rms_all = kNotReached;  // [m] whole airborne flight
+  double attitude_rms_deg_all = kNotReached;
+  double position_max_all = kNotReached;
+};
+
+struct ProcessLoad {
+  std::string process;
+  double cpu_percent_mean = 0.0;  // [% of one core] over the heartbeats of the flight
+  double cpu_percent_max = 0.0;
+  int64_t rejected = 0;
+  int64_t dropped = 0;
+  int64_t deadline_misses = 0;
+  int64_t errors = 0;
+};
+
+struct Check {
+  std::string name;      // criterion key, with the window label when per window
+  double value = 0.0;
+  double limit = 0.0;
+  bool upper = true;     // pass when value <= limit (else value >= limit)
+  bool pass = false;
+};
+
+struct FlightReport {
+  std::string scenario;
+  double flight_start = kNotReached;  // [s] first airborne truth sample
+  double flight_end = kNotReached;
+  std::vector<SetpointWindow> setpoints;
+  std::vector<PullWindow> pulls;
+  std::vector<PathTrackingReport> trajectories;  // one per tracked TRAJECTORY upload
+  EstimatorAccuracy estimator;
+  double imu_rate_hz = 0.0;        // by simulation time
+  double state_est_rate_hz = 0.0;
+  double rate_cmd_rate_hz = 0.0;
+  double gains_rate_hz = 0.0;
+  logger::Distribution solve_us;                 // GAINS solve_us
+  logger::Distribution iterations;               // GAINS iterations
+  logger::Distribution rate_cmd_period_ms;       // RATE_CMD utime intervals
+  logger::Distribution rate_cmd_jitter_ms;       // |interval - 10 ms|
+  logger::Distribution state_to_command_us;      // STATE_EST -> RATE_CMD, recorder receive clock
+  std::vector<ProcessLoad> processes;
+  double stack_cpu_percent = 0.0;  // sum of the flight processes' means
+  int64_t nonfinite = 0;           // messages with NaN/Inf among estimates, commands, gains
+  double max_tilt_deg = 0.0;
+  double touchdown_speed = 0.0;    // [m/s] fastest vertical speed at a ground contact
+  bool crashed = false;
+  std::vector<Check> checks;
+
+  bool passed() const;
+};
+
+struct AnalysisOptions {
+  double settle_error = 0.05;  // [m] used for settle_time when the scenario has no criterion
+  double return_error = 0.10;  // [m]
+  double hover_window = 1.5;   // [s]
+  double rate_cmd_period_s = 0.01;
+  // skip_radius, skip_window and return_error are overridden by the scenario's criteria of the
+  // same names (return_error: path_return_error); thrust limits come from the vehicle's lqr:
+  // section and are required by the criterion thrust_limit_violations_max.
+  PathTrackingOptions path;
+};
+
+// Throws std::invalid_argument for a criterion key it does not know (a typo would otherwise pass).
+FlightReport analyzeFlight(const logger::FlightLog& log, const mission::Scenario& scenario,
+                           AnalysisOptions options = {});
+
+void writeJson(const FlightReport& report, std::ostream& out);
+void writeSummary(const FlightReport& report, std::ostream& out);
+
+}  // namespace sdlqr::analysis

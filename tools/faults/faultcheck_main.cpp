@@ -1,0 +1,231 @@
+// sdlqr-faultcheck: what a fault test measured, from its flight log. Prints each process's last
+// HEARTBEAT counters that are rejections, watchdogs or injected faults, and fails unless every
+// --require'd counter is non-zero in some process and every process kept its heartbeat to the end.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sdlqr/config/cli.hpp"
+#include "sdlqr/faults/outage_check.hpp"
+#include "sdlqr/logger/flight_log.hpp"
+
+using namespace sdlqr;
+
+namespace {
+
+// "KILL,RESTART": two wall instants in microseconds since the epoch (`date +%s%6N`).
+std::pair<int64_t, int64_t> parseOutage(const std::string& option, const std::string& text) {
+  long long kill = 0, restart = 0;
+  if (std::sscanf(text.c_str(), "%lld,%lld", &kill, &restart) != 2 || kill <= 0 || restart < kill) {
+    throw std::invalid_argument(option + ": expected KILL_US,RESTART_US (wall clock, restart >= kill)");
+  }
+  return {kill, restart};
+}
+
+const char* verdict(bool ok) { return ok ? "ok  " : "FAIL"; }
+
+bool checkGains(const logger::FlightLog& log, const std::string& text, double fallback_timeout, double max_resume) {
+  const auto [kill, restart] = parseOutage("--gains-outage", text);
+  const faults::GainsOutage g = faults::measureGainsOutage(log, kill, restart, fallback_timeout);
+  const double fallback_after = g.first_fallback_utime >= 0 && g.last_gains_utime >= 0
+                                    ? 1e-6 * static_cast<double>(g.first_fallback_utime - g.last_gains_utime)
+                                    : -1.0;
+  const bool fallback_ok = g.fallback_commands > 0 && g.late_non_fallback_commands == 0;
+  const bool resume_ok = g.resume_delay_s >= 0.0 && g.resume_delay_s <= max_resume && g.fresh_commands_after_resume > 0;
+  std::cout << verdict(fallback_ok) << " gains outage: hover K in use " << fallback_after
+            << " s after the last GAINS (timeout " << fallback_timeout << " s), " << g.fallback_commands
+            << " RATE_CMD on it, " << g.late_non_fallback_commands << " past the timeout on another K\n";
+  std::cout << verdict(resume_ok) << " gains restart: first GAINS " << g.resume_delay_s
+            << " s after the restart (limit " << max_resume << " s), then " << g.fresh_commands_after_resume
+            << " RATE_CMD on fresh GAINS\n";
+  return fallback_ok && resume_ok;
+}
+
+bool checkEstimator(const logger::FlightLog& log, const std::string& text, double max_delay, double max_tilt,
+                    double max_touchdown_speed) {
+  const auto [kill, restart] = parseOutage("--estimator-outage", text);
+  const faults::EstimatorOutage e = faults::measureEstimatorOutage(log, kill, restart);
+  const bool failsafe_ok = e.failsafe_delay_s >= 0.0 && e.failsafe_delay_s <= max_delay;
+  const bool upright_ok = e.max_tilt_deg < max_tilt && !e.crashed;
+  const bool landing_ok = e.touchdown_utime >= 0 && e.touchdown_speed < max_touchdown_speed;
+  std::cout << verdict(failsafe_ok) << " estimator outage: last STATE_EST t=" << 1e-6 * e.last_estimate_utime
+            << " s, lowlevel failsafe " << e.failsafe_delay_s << " s later (limit " << max_delay << " s)\n";
+  std::cout << verdict(upright_ok) << " estimator outage: max tilt " << e.max_tilt_deg << " deg (limit " << max_tilt
+            << " deg)" << (e.crashed ? ", CRASHED" : "") << "\n";
+  std::cout << verdict(landing_ok) << " estimator outage: touchdown at t=" << 1e-6 * e.touchdown_utime << " s at "
+            << e.touchdown_speed << " m/s (limit " << max_touchdown_speed << " m/s), "
+            << (e.disarmed_after_touchdown ? "disarmed" : "not disarmed") << " before the restart\n";
+  return failsafe_ok && upright_ok && landing_ok;
+}
+
+bool checkController(const logger::FlightLog& log, const std::string& text, const std::string& setpoint_text,
+                     double until, double tolerance, double max_return, double max_gap_tilt) {
+  const auto [kill, restart] = parseOutage("--controller-outage", text);
+  double v[3] = {};
+  if (std::sscanf(setpoint_text.c_str(), "%lf,%lf,%lf", &v[0], &v[1], &v[2]) != 3) {
+    throw std::invalid_argument("--setpoint: expected X,Y,Z");
+  }
+  const faults::ControllerOutage c = faults::measureControllerOutage(
+      log, kill, restart, Vec3(v[0], v[1], v[2]), tolerance, static_cast<int64_t>(until * 1e6));
+  const double failsafe_delay =
+      c.failsafe_utime >= 0 ? 1e-6 * static_cast<double>(c.failsafe_utime - c.last_command_utime) : -1.0;
+  const bool gap_ok = c.failsafe_utime >= 0 && c.failsafe_utime <= c.resumed_utime && c.max_gap_tilt_deg < max_gap_tilt &&
+                      !c.crashed;
+  const bool return_ok = c.resumed_utime >= 0 && c.return_time_s >= 0.0 && c.return_time_s <= max_return;
+  std::cout << verdict(gap_ok) << " controller outage: last RATE_CMD t=" << 1e-6 * c.last_command_utime
+            << " s, lowlevel failsafe " << failsafe_delay << " s later, RATE_CMD again at t="
+            << 1e-6 * c.resumed_utime << " s; in the gap max tilt " << c.max_gap_tilt_deg << " deg (limit "
+            << max_gap_tilt << " deg), height lost " << c.gap_height_loss << " m" << (c.crashed ? ", CRASHED" : "")
+            << "\n";
+  std::cout << verdict(return_ok) << " controller restart: " << c.error_at_resume << " m from the setpoint on resuming, within "
+            << tolerance << " m for good " << c.return_time_s << " s later (limit " << max_return
+            << " s, held until t=" << until << " s)\n";
+  return gap_ok && return_ok;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return runMain("sdlqr-faultcheck", [&] {
+    std::string required_text, vehicle;
+    double max_silence = 2.5;
+    bool require_complete = false;
+    std::string hover_text;
+    double max_hover_error = 0.1;
+    ArgParser parser("sdlqr-faultcheck",
+                     "Reads a flight log and prints the rejection, watchdog and fault counters of every process.");
+    parser.addOption("--require", &required_text, "A,B,...", "counters that must be > 0 in some process");
+    parser.addOption("--max-silence", &max_silence, "S", "longest heartbeat gap of any process, wall time (default 2.5)");
+    parser.addOption("--hover", &hover_text, "T0,T1,X,Y,Z",
+                     "max |truth - (X,Y,Z)| over simulation time [T0, T1] s must stay below --max-hover-error");
+    parser.addOption("--max-hover-error", &max_hover_error, "M", "default 0.1 m");
+    parser.addFlag("--complete", &require_complete, "fail unless the log ends in a whole event");
+    parser.addOption("--vehicle", &vehicle, "PREFIX", "channel prefix of the vehicle");
+    std::string gains_outage, estimator_outage, controller_outage, setpoint_text;
+    double fallback_timeout = 1.0, max_gains_resume = 0.5;
+    double max_failsafe_delay = 0.2, max_tilt = 30.0, max_touchdown_speed = 1.0;
+    double settle_until = 0.0, return_tolerance = 0.1, max_return = 3.0, max_gap_tilt = 10.0;
+    parser.addOption("--gains-outage", &gains_outage, "KILL_US,RESTART_US",
+                     "sdlqr-gains killed/restarted at these wall instants (date +%s%6N): the hover K takes over\n"
+                     "after --fallback-timeout and fresh GAINS return within --max-gains-resume");
+    parser.addOption("--fallback-timeout", &fallback_timeout, "S", "controller.gains_fallback_s (default 1.0)");
+    parser.addOption("--max-gains-resume", &max_gains_resume, "S", "default 0.5 s of wall time");
+    parser.addOption("--estimator-outage", &estimator_outage, "KILL_US,RESTART_US",
+                     "sdlqr-estimator killed/restarted: the lowlevel failsafe engages within --max-failsafe-delay,\n"
+                     "tilt stays below --max-tilt, touchdown slower than --max-touchdown-speed");
+    parser.addOption("--max-failsafe-delay", &max_failsafe_delay, "S", "default 0.2 s of simulation time");
+    parser.addOption("--max-tilt", &max_tilt, "DEG", "default 30");
+    parser.addOption("--max-touchdown-speed", &max_touchdown_speed, "M_S", "default 1.0");
+    parser.addOption("--controller-outage", &controller_outage, "KILL_US,RESTART_US",
+                     "sdlqr-controller killed/restarted: the failsafe holds the vehicle level (tilt below\n"
+                     "--max-gap-tilt) and after the restart it is back within --return-tolerance of --setpoint\n"
+                     "within --max-return-time, staying there until --settle-until");
+    parser.addOption("--setpoint", &setpoint_text, "X,Y,Z", "held setpoint of --controller-outage [m]");
+    parser.addOption("--settle-until", &settle_until, "T", "simulation time [s] the return must last until");
+    parser.addOption("--return-tolerance", &return_tolerance, "M", "default 0.1 m");
+    parser.addOption("--max-return-time", &max_return, "S", "default 3 s of simulation time");
+    parser.addOption("--max-gap-tilt", &max_gap_tilt, "DEG", "default 10: level while the controller is away");
+    parser.setEpilog("exit codes: 0 every check passed, 1 a check failed, 2 bad option or unreadable log");
+    std::vector<std::string> positional;
+    parser.allowPositional(&positional, "LOG");
+    parser.parseOrExit(argc, argv);
+    if (positional.size() != 1) throw std::invalid_argument("expected one LOG file");
+    // Bad outage options fail before the log is read.
+    if (!gains_outage.empty()) parseOutage("--gains-outage", gains_outage);
+    if (!estimator_outage.empty()) parseOutage("--estimator-outage", estimator_outage);
+    if (!controller_outage.empty()) parseOutage("--controller-outage", controller_outage);
+    if (!controller_outage.empty() && setpoint_text.empty()) throw std::invalid_argument("--controller-outage needs --setpoint");
+    const logger::FlightLog log = logger::FlightLog::load(positional[0], vehicle);
+
+    std::map<std::string, const logger::HeartbeatRecord*> last;
+    std::map<std::string, std::pair<int64_t, int64_t>> first_last_receive;  // wall us
+    std::map<std::string, double> longest_gap_s;
+    for (size_t i = 0; i < log.heartbeat.size(); ++i) {
+      const logger::HeartbeatRecord& hb = log.heartbeat[i];
+      const int64_t t = log.heartbeat.receive_utime[i];
+      auto [it, inserted] = first_last_receive.try_emplace(hb.process, t, t);
+      if (!inserted) {
+        longest_gap_s[hb.process] = std::max(longest_gap_s[hb.process], 1e-6 * static_cast<double>(t - it->second.second));
+        it->second.second = t;
+      }
+      last[hb.process] = &hb;
+    }
+    int64_t log_end = 0;
+    for (const auto& [process, times] : first_last_receive) log_end = std::max(log_end, times.second);
+
+    bool ok = true;
+    std::cout << "log: " << log.file.events << " events, " << log.file.file_bytes << " bytes, "
+              << (log.file.complete() ? "complete" : "INCOMPLETE") << " (truncated tail " << log.file.truncated_tail_bytes
+              << " bytes, skipped " << log.file.skipped_bytes << " bytes)\n";
+    if (require_complete && !log.file.complete()) ok = false;
+    std::map<std::string, int64_t> totals;
+    for (const auto& [process, hb] : last) {
+      std::cout << process << ": rejected " << hb->rejected << ", dropped " << hb->dropped << ", errors " << hb->errors
+                << ", last heartbeat " << logger::processStateName(hb->state) << ", longest heartbeat gap "
+                << longest_gap_s[process] << " s\n";
+      for (const auto& [name, value] : hb->counters) {
+        totals[name] += value;
+        const bool interesting = name.rfind("reject.", 0) == 0 || name.rfind("watchdog.", 0) == 0 ||
+                                 name.rfind("fault.", 0) == 0 || name.rfind("fuzz.", 0) == 0;
+        if (interesting && value != 0) std::cout << "    " << name << " " << value << "\n";
+      }
+      // A process killed on purpose is silent for its outage.
+      const bool killed = (process == "sdlqr-gains" && !gains_outage.empty()) ||
+                          (process == "sdlqr-estimator" && !estimator_outage.empty()) ||
+                          (process == "sdlqr-controller" && !controller_outage.empty());
+      if (process != "sdlqr-fuzz-publisher" && !killed && longest_gap_s[process] > max_silence) {
+        std::cout << "FAIL " << process << ": heartbeat silent for " << longest_gap_s[process] << " s (stalled?)\n";
+        ok = false;
+      }
+    }
+    if (!hover_text.empty()) {
+      double v[5] = {};
+      if (std::sscanf(hover_text.c_str(), "%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4]) != 5) {
+        throw std::invalid_argument("--hover: expected T0,T1,X,Y,Z");
+      }
+      const Vec3 setpoint(v[2], v[3], v[4]);
+      double worst = 0.0, sum_sq = 0.0;
+      int64_t samples = 0;
+      bool crashed = false;
+      for (const SimTruth& truth : log.sim_truth.messages) {
+        const double t = 1e-6 * static_cast<double>(truth.utime);
+        crashed = crashed || truth.crashed;
+        if (t < v[0] || t > v[1]) continue;
+        const double error = (truth.position - setpoint).norm();
+        worst = std::max(worst, std::isfinite(error) ? error : 1e9);
+        sum_sq += error * error;
+        ++samples;
+      }
+      const double rms = samples > 0 ? std::sqrt(sum_sq / static_cast<double>(samples)) : 0.0;
+      std::cout << "hover error over t=[" << v[0] << ", " << v[1] << "] s (" << samples << " truth samples): max "
+                << worst << " m, RMS " << rms << " m (limit " << max_hover_error << " m)"
+                << (crashed ? ", CRASHED" : "") << "\n";
+      ok = ok && samples > 0 && worst < max_hover_error && !crashed;
+    }
+    size_t start = 0;
+    while (start <= required_text.size() && !required_text.empty()) {
+      size_t end = required_text.find(',', start);
+      if (end == std::string::npos) end = required_text.size();
+      const std::string name = required_text.substr(start, end - start);
+      start = end + 1;
+      if (name.empty()) continue;
+      const int64_t total = totals.count(name) ? totals[name] : 0;
+      std::cout << (total > 0 ? "ok   " : "FAIL ") << name << " = " << total << " over all processes\n";
+      ok = ok && total > 0;
+    }
+    if (!gains_outage.empty()) ok = checkGains(log, gains_outage, fallback_timeout, max_gains_resume) && ok;
+    if (!estimator_outage.empty()) {
+      ok = checkEstimator(log, estimator_outage, max_failsafe_delay, max_tilt, max_touchdown_speed) && ok;
+    }
+    if (!controller_outage.empty()) {
+      ok = checkController(log, controller_outage, setpoint_text, settle_until, return_tolerance, max_return,
+                           max_gap_tilt) && ok;
+    }
+    return ok ? 0 : 1;
+  });
+}

@@ -1,0 +1,144 @@
+#include "sdlqr/faults/outage_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sdlqr/math/quaternion.hpp"
+
+namespace sdlqr::faults {
+
+namespace {
+
+constexpr double kRadToDeg = 180.0 / M_PI;
+
+// Index of the last message received before `wall_utime`, or -1.
+template <class T>
+std::ptrdiff_t lastReceivedBefore(const logger::Series<T>& series, int64_t wall_utime) {
+  std::ptrdiff_t found = -1;
+  for (size_t i = 0; i < series.size(); ++i) {
+    if (series.receive_utime[i] < wall_utime) found = static_cast<std::ptrdiff_t>(i);
+  }
+  return found;
+}
+
+template <class T>
+std::ptrdiff_t firstReceivedAtOrAfter(const logger::Series<T>& series, int64_t wall_utime) {
+  for (size_t i = 0; i < series.size(); ++i) {
+    if (series.receive_utime[i] >= wall_utime) return static_cast<std::ptrdiff_t>(i);
+  }
+  return -1;
+}
+
+int64_t firstFailsafeAfter(const logger::FlightLog& log, int64_t utime) {
+  for (const MotorCommand& motor : log.motor_command.messages) {
+    if (motor.utime >= utime && motor.mode == MotorMode::kFailsafe) return motor.utime;
+  }
+  return -1;
+}
+
+double seconds(int64_t us) { return static_cast<double>(us) * 1e-6; }
+
+}  // namespace
+
+int64_t simTimeAtWall(const logger::FlightLog& log, int64_t wall_utime) {
+  const std::ptrdiff_t i = firstReceivedAtOrAfter(log.sim_truth, wall_utime);
+  return i < 0 ? -1 : log.sim_truth[static_cast<size_t>(i)].utime;
+}
+
+GainsOutage measureGainsOutage(const logger::FlightLog& log, int64_t kill_wall, int64_t restart_wall,
+                               double fallback_timeout_s) {
+  GainsOutage out;
+  const std::ptrdiff_t last = lastReceivedBefore(log.gains, kill_wall);
+  if (last >= 0) out.last_gains_utime = log.gains[static_cast<size_t>(last)].utime;
+  const std::ptrdiff_t resumed = firstReceivedAtOrAfter(log.gains, restart_wall);
+  if (resumed >= 0) out.resume_delay_s = seconds(log.gains.receive_utime[static_cast<size_t>(resumed)] - restart_wall);
+  // One controller tick of slack past the timeout: the tick that crosses it may still use the K.
+  const int64_t timeout_utime = out.last_gains_utime + static_cast<int64_t>((fallback_timeout_s + 0.01) * 1e6);
+  for (size_t i = 0; i < log.rate_command.size(); ++i) {
+    const RateCommand& command = log.rate_command[i];
+    const int64_t received = log.rate_command.receive_utime[i];
+    if (received < kill_wall) continue;
+    const bool fallback = command.gains_status == GainsFreshness::kFallback;
+    if (received < restart_wall) {
+      if (fallback) {
+        ++out.fallback_commands;
+        if (out.first_fallback_utime < 0) out.first_fallback_utime = command.utime;
+      } else if (out.last_gains_utime >= 0 && command.utime > timeout_utime) {
+        ++out.late_non_fallback_commands;
+      }
+    } else if (command.gains_status == GainsFreshness::kFresh && command.gains_seq >= 0 && resumed >= 0 &&
+               received >= log.gains.receive_utime[static_cast<size_t>(resumed)]) {
+      ++out.fresh_commands_after_resume;
+    }
+  }
+  return out;
+}
+
+EstimatorOutage measureEstimatorOutage(const logger::FlightLog& log, int64_t kill_wall, int64_t restart_wall) {
+  EstimatorOutage out;
+  const std::ptrdiff_t last = lastReceivedBefore(log.state_estimate, kill_wall);
+  if (last < 0) return out;
+  out.last_estimate_utime = log.state_estimate[static_cast<size_t>(last)].utime;
+  out.failsafe_utime = firstFailsafeAfter(log, out.last_estimate_utime);
+  if (out.failsafe_utime >= 0) out.failsafe_delay_s = seconds(out.failsafe_utime - out.last_estimate_utime);
+  int64_t end_utime = simTimeAtWall(log, restart_wall);
+  if (end_utime < 0) end_utime = log.sim_truth.empty() ? 0 : log.sim_truth.back().utime;
+  const SimTruth* previous = nullptr;
+  for (const SimTruth& truth : log.sim_truth.messages) {
+    if (truth.utime < out.last_estimate_utime || truth.utime > end_utime) continue;
+    out.crashed = out.crashed || truth.crashed;
+    out.max_tilt_deg = std::max(out.max_tilt_deg, quat::tilt(truth.orientation) * kRadToDeg);
+    if (out.touchdown_utime < 0 && truth.on_ground && previous != nullptr && !previous->on_ground) {
+      out.touchdown_utime = truth.utime;
+      out.touchdown_speed = previous->velocity.norm();
+    }
+    previous = &truth;
+  }
+  if (out.touchdown_utime >= 0) {
+    for (const MotorCommand& motor : log.motor_command.messages) {
+      if (motor.utime >= out.touchdown_utime && motor.utime <= end_utime && motor.mode == MotorMode::kDisarmed) {
+        out.disarmed_after_touchdown = true;
+        break;
+      }
+    }
+  }
+  return out;
+}
+
+ControllerOutage measureControllerOutage(const logger::FlightLog& log, int64_t kill_wall, int64_t restart_wall,
+                                         const Vec3& setpoint, double tolerance, int64_t until_utime) {
+  ControllerOutage out;
+  const std::ptrdiff_t last = lastReceivedBefore(log.rate_command, kill_wall);
+  const std::ptrdiff_t resumed = firstReceivedAtOrAfter(log.rate_command, restart_wall);
+  if (last < 0 || resumed < 0) return out;
+  out.last_command_utime = log.rate_command[static_cast<size_t>(last)].utime;
+  out.resumed_utime = log.rate_command[static_cast<size_t>(resumed)].utime;
+  out.failsafe_utime = firstFailsafeAfter(log, out.last_command_utime);
+  double lowest = setpoint[2];
+  int64_t inside_since = -1;
+  bool error_at_resume_set = false;
+  for (const SimTruth& truth : log.sim_truth.messages) {
+    if (truth.utime < out.last_command_utime || truth.utime > until_utime) continue;
+    out.crashed = out.crashed || truth.crashed;
+    if (truth.utime <= out.resumed_utime) {
+      out.max_gap_tilt_deg = std::max(out.max_gap_tilt_deg, quat::tilt(truth.orientation) * kRadToDeg);
+      lowest = std::min(lowest, truth.position[2]);
+      continue;
+    }
+    const double error = (truth.position - setpoint).norm();
+    if (!error_at_resume_set) {
+      out.error_at_resume = error;
+      error_at_resume_set = true;
+    }
+    if (!(error < tolerance)) {
+      inside_since = -1;
+    } else if (inside_since < 0) {
+      inside_since = truth.utime;
+    }
+  }
+  out.gap_height_loss = setpoint[2] - lowest;
+  if (inside_since >= 0) out.return_time_s = seconds(inside_since - out.resumed_utime);
+  return out;
+}
+
+}  // namespace sdlqr::faults

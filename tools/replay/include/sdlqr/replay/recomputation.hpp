@@ -1,0 +1,123 @@
+#pragma once
+// Recomputes a recorded flight: a fresh estimator, gain solver and controller (the libraries of
+// sdlqr-estimator, sdlqr-gains and sdlqr-controller, with the validation their mains apply) are
+// fed the recorded inputs in one thread, so the result does not depend on scheduling.
+//
+// The pairing contract. On the bus, which message a process handles first is a race (a GAINS
+// may land just before or just after a controller tick). Every output therefore names the inputs
+// it used, and the replay feeds each process the same pairing:
+//   - estimator: IMU and VIO_POSE in the recorder's order; STATE_EST names imu_seq and vio_seq.
+//   - controller: each recomputed STATE_EST is handed over where the recorded STATE_EST of that
+//     seq sits in the log (TRAJECTORY, PARAMS in between keep their place); before the tick of a
+//     recorded RATE_CMD, the controller is given the GAINS that RATE_CMD names (gains_seq),
+//     recomputed by the replay's solver, and every COMMAND up to the one its REFERENCE names
+//     (command_seq), even one the recorder heard later; a COMMAND the recorder heard before an
+//     estimate whose tick names an older one is held back until after that estimate.
+//   - gain solver: at each solve, the REFERENCE that the recorded GAINS names (reference_seq) is
+//     the reference input, recomputed by the replay's controller.
+//   - REFERENCE names command_seq, params_seq and trajectory_seq; GAINS names state_seq and
+//     params_seq; RATE_CMD names state_seq, gains_seq and reference_seq. These are compared like
+//     every other field, so a tick that saw other inputs than the recorded one is reported.
+// With the same code and the same pairing, every output is identical bit for bit.
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "sdlqr/math/lqr_params.hpp"
+#include "sdlqr/health/validate.hpp"
+#include "sdlqr/controller/controller_params.hpp"
+#include "sdlqr/gains/gain_scheduler.hpp"
+#include "sdlqr/gains/gains_params.hpp"
+#include "sdlqr/controller/state_dependent_lqr.hpp"
+#include "sdlqr/estimator/estimator.hpp"
+#include "sdlqr/replay/recorded_flight.hpp"
+
+namespace sdlqr::replay {
+
+struct ReplayParams {
+  estimator::EstimatorParams estimator;
+  LqrParams lqr;
+  controller::ControllerParams controller;
+  gains::GainsParams gains;
+};
+
+// How the pairing was honoured.
+struct PairingStats {
+  int64_t gains_from_replay = 0;    // GAINS named by a RATE_CMD, taken from the recomputed ones
+  int64_t gains_from_record = 0;    // named GAINS the replay did not recompute: the recorded one fed
+  int64_t references_from_replay = 0;
+  int64_t references_from_record = 0;
+  int64_t solves_unpaired = 0;      // a solve at an estimate no recorded GAINS names
+  int64_t estimates_without_record = 0;  // recomputed STATE_EST of a seq absent from the log
+  int64_t rejected = 0;             // inputs refused by the validation of the process mains
+  int64_t solve_failures = 0;
+  // STATE_EST the process did not receive on the bus (its queue holds one message), inferred
+  // from the recorded outputs: the controller ticked later, the solver solved on a later one.
+  int64_t estimates_missed_by_controller = 0;
+  int64_t estimates_missed_by_solver = 0;
+};
+
+class Recomputation {
+ public:
+  // `flight` must outlive this object. Throws std::invalid_argument on invalid parameters.
+  Recomputation(const ReplayParams& params, const RecordedFlight& flight);
+
+  bool done() const { return next_ >= flight_.order.size(); }
+  // Simulation time of the next input (for pacing against wall time).
+  int64_t nextUtime() const { return flight_.utimeAt(flight_.order[next_]); }
+  // Handles the next input of the log; new outputs are appended to outputs().
+  void step();
+  // Hands over estimates still waiting for their place in the log. Call once done().
+  void finish();
+  void runToEnd() {
+    while (!done()) step();
+    finish();
+  }
+
+  const ReplayOutputs& outputs() const { return outputs_; }
+  const PairingStats& pairing() const { return pairing_; }
+  std::size_t inputsHandled() const { return next_; }
+
+ private:
+  void onImu(const ImuSample& sample);
+  void onRecordedEstimate(int64_t seq);
+  void handOver(const StateEstimate& estimate);
+  void controllerOnEstimate(const StateEstimate& estimate);
+  bool missedByController(const StateEstimate& estimate, const RateCommand& recorded) const;
+  void gainsOnEstimate(const StateEstimate& estimate);
+  void feedNamedGains(int64_t gains_seq);
+  void deliverCommandsBefore(const StateEstimate& estimate);
+  void applyCommand(const Command& command);
+  void onTrajectory(const Trajectory& trajectory);
+  void onParams(const ParamsUpdate& update);
+  bool rejected(RejectReason reason);
+
+  const RecordedFlight& flight_;
+  std::size_t next_ = 0;
+  ReplayOutputs outputs_;
+  PairingStats pairing_;
+
+  estimator::Estimator estimator_;
+  gains::GainScheduler scheduler_;
+  int64_t solve_period_us_;  // as GainScheduler's grid
+  controller::StateDependentLqr controller_;
+  int64_t tick_period_us_;   // as the controller's grid
+  ValidationLimits limits_;
+  TimeGate controller_state_time_, gains_state_time_;
+
+  // Recomputed estimates waiting for the log position of the recorded STATE_EST of their seq.
+  std::map<int64_t, StateEstimate> waiting_;
+  int64_t handed_over_up_to_ = -1;    // highest recorded STATE_EST seq whose place has passed
+  std::size_t next_tick_ = 0;         // index of the next recorded RATE_CMD
+  std::size_t next_solve_ = 0;        // index of the next recorded GAINS
+  int64_t fed_gains_seq_ = -1;
+  std::vector<std::size_t> heard_commands_;  // COMMANDs the recorder heard, not yet applied
+  int64_t applied_command_seq_ = -1;
+  // Recomputed outputs by seq, for the pairing.
+  std::map<int64_t, std::size_t> replayed_gains_, replayed_reference_;
+  std::map<int64_t, std::size_t> recorded_gains_, recorded_reference_, recorded_estimate_;
+};
+
+}  // namespace sdlqr::replay

@@ -1,0 +1,47 @@
+#pragma once
+// A recorded flight as the replay needs it: the inputs of the estimator, the gain solver and the
+// controller (IMU, VIO_POSE, COMMAND, TRAJECTORY, PARAMS) and the recorded STATE_EST in the order
+// the recorder heard them, plus the recorded outputs (STATE_EST, RATE_CMD, REFERENCE, GAINS) to
+// take the pairing from and to compare with. Plain structs, no LCM.
+
+#include <cstdint>
+#include <vector>
+
+#include "sdlqr/messages/messages.hpp"
+
+namespace sdlqr::replay {
+
+enum class InputKind : uint8_t { kImu, kVioPose, kStateEstimate, kCommand, kTrajectory, kParams };
+
+struct LogPosition {
+  InputKind kind;
+  int32_t index;  // into the series of that kind
+};
+
+struct RecordedFlight {
+  std::vector<LogPosition> order;  // every message below but the outputs other than STATE_EST, in log order
+
+  std::vector<ImuSample> imu;
+  std::vector<VioPose> vio_pose;
+  std::vector<Command> command;
+  std::vector<Trajectory> trajectory;
+  std::vector<ParamsUpdate> params;
+
+  // Recorded outputs, each in log order.
+  std::vector<StateEstimate> state_estimate;
+  std::vector<RateCommand> rate_command;
+  std::vector<Reference> reference;
+  std::vector<GainSet> gains;
+
+  int64_t utimeAt(const LogPosition& p) const;
+};
+
+// The recomputed outputs, in the order they were computed.
+struct ReplayOutputs {
+  std::vector<StateEstimate> state_estimate;
+  std::vector<RateCommand> rate_command;
+  std::vector<Reference> reference;
+  std::vector<GainSet> gains;
+};
+
+}  // namespace sdlqr::replay
