@@ -117,6 +117,7 @@ int runRecord(int argc, const char* const* argv) {
   parser.addOption("--lcm-url", &process.lcm_url, "URL",
                    "LCM provider (default: $LCM_DEFAULT_URL or udpm://239.255.76.67:7667?ttl=0)");
   parser.addOption("--vehicle", &process.vehicle, "PREFIX", "vehicle to record; also prefixes this logger's HEARTBEAT");
+  sdlqr::addBusLayoutOption(parser, &process);
   parser.setEpilog(
       "Other mode: sdlqr-logger export LOG --out DIR   (CSV per channel + metrics.json; see export --help)\n\n"
       "exit codes: 0 recorded, 1 write errors or fatal error, 2 bad arguments or the file exists");

@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
         // A replay needs a message at least replay_age old; until then nothing is sent for it.
         if (replay && (target.old.empty() || seconds() - target.old_taken_s < replay_age)) continue;
         if (!generator.make(kind, *target.type, replay ? target.old : target.latest, out)) continue;
-        bus.lcm().publish(target.channel, out.data(), static_cast<unsigned>(out.size()));
+        bus.publishEncoded(target.channel, out.data(), static_cast<int>(out.size()));
         bus.counters().increment(sent_ids[static_cast<int>(kind)]);
       }
       ++round;

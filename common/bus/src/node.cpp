@@ -1,10 +1,13 @@
 #include "sdlqr/bus/node.hpp"
 
+#include <poll.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <cerrno>
 #include <cctype>
 #include <cmath>
 #include <csignal>
@@ -99,11 +102,11 @@ Node::Node(std::string process, const ProcessOptions& options)
       throw std::invalid_argument("--vehicle: use letters, digits, '_' or '-' only, got '" + vehicle_ + "'");
     }
   }
-  lcm_ = std::make_unique<lcm::LCM>(options.lcm_url);
-  if (!lcm_->good()) {
-    throw std::runtime_error("cannot open LCM bus '" + (options.lcm_url.empty() ? std::string("default") : options.lcm_url) +
-                             "' (is multicast routed? see README, Troubleshooting)");
-  }
+  base_url_ = resolveLcmUrl(options.lcm_url);
+  // Without ports to separate channels every layout is the single one.
+  layout_ = isUdpmUrl(base_url_) ? parseBusLayout(options.bus_layout) : BusLayout::kSingle;
+  base_url_ = urlWithPortOffset(base_url_, 0);
+  endpoint(base_url_);
   reject_decode_ = counters_.add("reject.decode");
   reject_size_ = counters_.add("reject.size");
   if (const char* spec = std::getenv("SDLQR_FAULTS"); spec != nullptr && spec[0] != '\0') {
@@ -121,6 +124,47 @@ Node::Node(std::string process, const ProcessOptions& options)
 }
 
 Node::~Node() = default;
+
+namespace {
+
+constexpr size_t kMaxEndpoints = 16;  // the split layout has 8 URLs
+using PollSet = std::array<pollfd, kMaxEndpoints>;
+
+// The notify descriptor of each receiving connection (LCM makes it readable per message).
+template <class Endpoints>
+size_t fillPollSet(const Endpoints& receiving, PollSet& fds) {
+  for (size_t i = 0; i < receiving.size(); ++i) fds[i] = {receiving[i]->lcm->getFileno(), POLLIN, 0};
+  return receiving.size();
+}
+
+}  // namespace
+
+Node::Endpoint& Node::endpoint(const std::string& url) {
+  for (const auto& e : endpoints_) {
+    if (e->url == url) return *e;
+  }
+  if (endpoints_.size() == kMaxEndpoints) throw std::runtime_error("more than 16 LCM URLs in one process");
+  auto e = std::make_unique<Endpoint>();
+  e->url = url;
+  e->lcm = std::make_unique<lcm::LCM>(url);
+  if (!e->lcm->good()) {
+    throw std::runtime_error("cannot open LCM bus '" + url + "' (is multicast routed? see README, Troubleshooting)");
+  }
+  endpoints_.push_back(std::move(e));
+  return *endpoints_.back();
+}
+
+void Node::markReceiving(Endpoint& e) {
+  if (e.receiving) return;
+  e.receiving = true;
+  receiving_.push_back(&e);
+}
+
+std::vector<std::string> Node::receiveUrls() const {
+  std::vector<std::string> urls;
+  for (const Endpoint* e : receiving_) urls.push_back(e->url);
+  return urls;
+}
 
 void Node::dispatch(const lcm_recv_buf_t* rbuf, const char*, void* sub) {
   auto* subscription = static_cast<SubscriptionBase*>(sub);
@@ -198,12 +242,20 @@ int Node::millisecondsToNextDue(int timeout_ms) const {
   return timeout_ms < 0 ? wait : std::min(timeout_ms, wait);
 }
 
-const std::string& Node::publishChannel(std::string_view base) {
-  for (const auto& [known_base, full] : publish_channels_) {
-    if (known_base == base) return full;
+const Node::PublishChannel& Node::publishChannel(std::string_view base) {
+  for (const PublishChannel& known : publish_channels_) {
+    if (known.base == base) return known;
   }
-  publish_channels_.emplace_back(std::string(base), channel(base));
-  return publish_channels_.back().second;
+  PublishChannel entry;
+  entry.base = std::string(base);
+  entry.full = channel(base);
+  entry.lcm = endpointFor(base).lcm.get();
+  publish_channels_.push_back(std::move(entry));
+  return publish_channels_.back();
+}
+
+void Node::publishEncoded(const std::string& channel, const void* data, int size) {
+  publishRaw(*endpointFor(channel).lcm, channel, data, size);
 }
 
 void Node::dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub) {
@@ -215,8 +267,13 @@ void Node::subscribeRaw(const std::string& pattern, RawHandler handler, int queu
   auto sub = std::make_unique<RawSubscription>();
   sub->node = this;
   sub->handler = std::move(handler);
-  lcm::Subscription* handle = lcm_->subscribeFunction(pattern, &Node::dispatchRaw, sub.get());
-  if (queue_capacity > 0) handle->setQueueCapacity(queue_capacity);
+  for (const std::string& url : layoutUrls(layout_, base_url_)) {
+    Endpoint& e = endpoint(url);
+    lcm::Subscription* handle = e.lcm->subscribeFunction(pattern, &Node::dispatchRaw, sub.get());
+    if (handle == nullptr) throw std::runtime_error("cannot subscribe to '" + pattern + "' on " + url);
+    if (queue_capacity > 0) handle->setQueueCapacity(queue_capacity);
+    markReceiving(e);
+  }
   raw_subscriptions_.push_back(std::move(sub));
 }
 
@@ -228,9 +285,11 @@ void Node::addSubscription(const std::string& channel, std::unique_ptr<Subscript
     if (std::string_view(".[]()*+?^$|\\{}").find(c) != std::string_view::npos) pattern.push_back('\\');
     pattern.push_back(c);
   }
-  lcm_subscription_t* handle = lcm_subscribe(lcm_->getUnderlyingLCM(), pattern.c_str(), &Node::dispatch, sub.get());
+  Endpoint& e = endpointFor(channel);
+  lcm_subscription_t* handle = lcm_subscribe(e.lcm->getUnderlyingLCM(), pattern.c_str(), &Node::dispatch, sub.get());
   if (!handle) throw std::runtime_error("cannot subscribe to " + channel);
   if (queue_capacity > 0) lcm_subscription_set_queue_capacity(handle, queue_capacity);
+  markReceiving(e);
   subscriptions_.push_back(std::move(sub));
 }
 
@@ -240,8 +299,8 @@ void Node::noteSequence(SubscriptionBase& sub, int64_t seq) {
   sub.last_seq = seq;
 }
 
-void Node::publishRaw(const std::string& channel, const void* data, int size) {
-  if (lcm_->publish(channel, data, static_cast<unsigned int>(size)) != 0) {
+void Node::publishRaw(lcm::LCM& lcm, const std::string& channel, const void* data, int size) {
+  if (lcm.publish(channel, data, static_cast<unsigned int>(size)) != 0) {
     countError();
     setLastError("publish failed on " + channel);
     return;
@@ -253,7 +312,7 @@ bool Node::running() const { return !g_stop_requested.load(); }
 
 bool Node::spin(int timeout_ms) {
   if (!running()) return false;
-  const int status = lcm_->handleTimeout(millisecondsToNextDue(timeout_ms));
+  const int status = handleReady(millisecondsToNextDue(timeout_ms));
   if (status < 0 && running()) {
     countError();
     setLastError("LCM handle failed");
@@ -261,6 +320,28 @@ bool Node::spin(int timeout_ms) {
   deliverDueMessages();
   if (std::chrono::steady_clock::now() >= next_heartbeat_) publishHeartbeat();
   return running();
+}
+
+int Node::handleReady(int timeout_ms) {
+  PollSet fds{};
+  const size_t count = fillPollSet(receiving_, fds);
+  const int ready = poll(fds.data(), count, timeout_ms);
+  if (ready <= 0) return ready < 0 && errno != EINTR ? -1 : 0;
+  int handled = 0;
+  for (size_t i = 0; i < count; ++i) {
+    if ((fds[i].revents & POLLIN) == 0) continue;
+    if (lcm_handle(receiving_[i]->lcm->getUnderlyingLCM()) != 0) return -1;
+    ++handled;
+  }
+  return handled;
+}
+
+bool Node::waitReadable(std::chrono::steady_clock::duration timeout) {
+  PollSet fds{};
+  const size_t count = fillPollSet(receiving_, fds);
+  const auto ns = std::max<int64_t>(0, std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count());
+  const timespec wait{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
+  return ppoll(fds.data(), count, &wait, nullptr) > 0;
 }
 
 void Node::shutdown() {

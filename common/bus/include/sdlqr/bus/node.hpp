@@ -7,6 +7,9 @@
 // Optional seeded fault injection (drop, delay) on received messages, for tests: see
 // FaultInjection, enabled by the SDLQR_FAULTS environment variable or setFaultInjection().
 // Algorithm code never sees this header; mains hand plain structs (common/messages.hpp) on.
+// Bus layout (bus_layout.hpp): under the split layout a channel travels on the port the layout
+// gives it, so the Node opens one lcm::LCM per URL it subscribes or publishes on, and polls
+// the ones it subscribes on together; a URL it only publishes on never opens a receive socket.
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -19,6 +22,7 @@
 #include <string_view>
 #include <vector>
 
+#include "sdlqr/bus/bus_layout.hpp"
 #include "sdlqr/messages/channels.hpp"
 #include "sdlqr/config/cli.hpp"
 
@@ -71,7 +75,12 @@ class Node {
   Node& operator=(const Node&) = delete;
 
   std::string channel(std::string_view base) const { return channel::name(vehicle_, base); }
-  lcm::LCM& lcm() { return *lcm_; }
+  // The connection of the --lcm-url itself (the base port): under the split layout it carries
+  // only the low-rate channels; publishEncoded() routes any channel to its own URL.
+  lcm::LCM& lcm() { return *endpoints_.front()->lcm; }
+  BusLayout busLayout() const { return layout_; }
+  // Every URL this node receives on (one per port it subscribes on), in the order opened.
+  std::vector<std::string> receiveUrls() const;
 
   // Decodes each message of `base` as T and calls handler(msg). A message that fails to decode
   // is counted as rejected ("reject.decode") and never reaches the handler. Gaps in `seq` count
@@ -83,7 +92,7 @@ class Node {
 
   // Undecoded messages of every channel whose full name matches the LCM regex `pattern` (no
   // vehicle prefix is added): for recorders. Counted as received; `receive_utime` is LCM's
-  // wall-clock receive time [us].
+  // wall-clock receive time [us]. Listens on every URL of the layout, so it hears every channel.
   using RawHandler =
       std::function<void(const std::string& channel, const void* data, uint32_t size, int64_t receive_utime)>;
   void subscribeRaw(const std::string& pattern, RawHandler handler, int queue_capacity);
@@ -91,6 +100,9 @@ class Node {
   // Encodes and publishes on the vehicle-prefixed channel.
   template <class T>
   void publish(std::string_view base, const T& msg);
+  // Already encoded bytes on a full channel name (no prefix added), on that channel's URL: for
+  // tools that forward or forge messages. Counted as published; a failure counts an error.
+  void publishEncoded(const std::string& channel, const void* data, int size);
 
   // Replaces the fault injection read from SDLQR_FAULTS at construction (tests over memq://).
   void setFaultInjection(const FaultInjection& faults);
@@ -99,6 +111,9 @@ class Node {
   // Handles messages for up to timeout_ms and publishes HEARTBEAT when one is due.
   // Returns false once SIGINT or SIGTERM has been received.
   bool spin(int timeout_ms);
+  // Waits up to `timeout` (finer than spin's milliseconds) until a message is ready on any
+  // subscribed URL, handling nothing; true when one is. Without subscriptions it just sleeps.
+  bool waitReadable(std::chrono::steady_clock::duration timeout);
   bool running() const;
   // For a main that ends itself (e.g. a duration elapsed): publishes a last STOPPING heartbeat.
   void shutdown();
@@ -170,17 +185,38 @@ class Node {
   void deliverDueMessages();
   int millisecondsToNextDue(int timeout_ms) const;
   void addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity);
-  void publishRaw(const std::string& channel, const void* data, int size);
-  // Full channel name of a base name, built once: publishing then never allocates.
-  const std::string& publishChannel(std::string_view base);
+  // One connection per URL; receiving once something subscribed on it (LCM then runs a receive
+  // thread with its own socket bound to the URL's port).
+  struct Endpoint {
+    std::string url;
+    std::unique_ptr<lcm::LCM> lcm;
+    bool receiving = false;
+  };
+  Endpoint& endpoint(const std::string& url);
+  Endpoint& endpointFor(std::string_view channel) { return endpoint(channelUrl(layout_, base_url_, channel)); }
+  void markReceiving(Endpoint& e);
+  void publishRaw(lcm::LCM& lcm, const std::string& channel, const void* data, int size);
+  // Full channel name of a base name and its connection, found once: publishing then never allocates.
+  struct PublishChannel {
+    std::string base;
+    std::string full;
+    lcm::LCM* lcm = nullptr;
+  };
+  const PublishChannel& publishChannel(std::string_view base);
+  // Polls every receiving connection for up to timeout_ms and handles one message on each ready
+  // one; returns the number handled, or -1 on an error.
+  int handleReady(int timeout_ms);
 
   std::string process_;
   std::string vehicle_;
-  std::unique_ptr<lcm::LCM> lcm_;
+  BusLayout layout_ = BusLayout::kSplit;
+  std::string base_url_;
+  std::vector<std::unique_ptr<Endpoint>> endpoints_;  // [0]: the base URL
   std::vector<std::unique_ptr<SubscriptionBase>> subscriptions_;
   std::vector<std::unique_ptr<RawSubscription>> raw_subscriptions_;
   std::vector<uint8_t> encode_buffer_;
-  std::vector<std::pair<std::string, std::string>> publish_channels_;  // base -> prefixed
+  std::vector<PublishChannel> publish_channels_;
+  std::vector<Endpoint*> receiving_;  // the endpoints handleReady polls
   Counters counters_;
   Counters::Id reject_decode_;
   Counters::Id reject_size_;
@@ -228,7 +264,8 @@ void Node::publish(std::string_view base, const T& msg) {
     setLastError("encode failed on " + std::string(base));
     return;
   }
-  publishRaw(publishChannel(base), encode_buffer_.data(), size);
+  const PublishChannel& target = publishChannel(base);
+  publishRaw(*target.lcm, target.full, encode_buffer_.data(), size);
 }
 
 }  // namespace sdlqr::bus
