@@ -34,4 +34,8 @@ std::string channelUrl(BusLayout layout, const std::string& base_url, std::strin
 // Every distinct URL of the layout, the base URL first: what a recorder listens on.
 std::vector<std::string> layoutUrls(BusLayout layout, const std::string& base_url);
 
+// Where `sdlqr-bridge merge` (and so ./sdlqr spy) republishes every channel of a split bus by
+// default: the base URL with its port raised by 10, above every port of the layout.
+inline constexpr int kMonitorPortOffset = 10;
+
 }  // namespace sdlqr::bus
