@@ -16,7 +16,8 @@ constexpr std::string_view kLcmDefaultAddress = "239.255.76.67";
 constexpr int kLcmDefaultPort = 7667;
 
 int parsePort(const std::string& url, const std::string& text) {
-  if (text.empty() || text.size() > 5 || text.find_first_not_of("0123456789") != std::string::npos) {
+  if (text.empty() || text.size() > 5 || text.find_first_not_of("0123456789") != std::string::npos ||
+      std::stoi(text) > 65535) {
     throw std::invalid_argument("--lcm-url '" + url + "': bad port '" + text + "'");
   }
   return std::stoi(text);
@@ -41,20 +42,29 @@ std::string resolveLcmUrl(const std::string& url) {
 
 bool isUdpmUrl(const std::string& url) { return url.rfind(kUdpmScheme, 0) == 0; }
 
-std::string urlWithPortOffset(const std::string& url, int offset) {
-  if (!isUdpmUrl(url)) return url;
+UdpmUrl parseUdpmUrl(const std::string& url) {
   const size_t network_start = kUdpmScheme.size();
   const size_t options_start = std::min(url.find('?', network_start), url.size());
   const std::string network = url.substr(network_start, options_start - network_start);
   const size_t colon = network.find(':');
-  std::string address = network.substr(0, colon);
-  if (address.empty()) address = std::string(kLcmDefaultAddress);
-  const int port = colon == std::string::npos ? kLcmDefaultPort : parsePort(url, network.substr(colon + 1));
-  if (port + offset > 65535) {
-    throw std::invalid_argument("--lcm-url '" + url + "': port " + std::to_string(port) + " leaves no room for the " +
-                                std::to_string(offset) + " ports above it of the split bus layout");
+  UdpmUrl parts;
+  parts.address = network.substr(0, colon);
+  if (parts.address.empty()) parts.address = std::string(kLcmDefaultAddress);
+  parts.port = colon == std::string::npos ? kLcmDefaultPort : parsePort(url, network.substr(colon + 1));
+  if (options_start < url.size()) parts.options = url.substr(options_start + 1);
+  return parts;
+}
+
+std::string urlWithPortOffset(const std::string& url, int offset) {
+  if (!isUdpmUrl(url)) return url;
+  const UdpmUrl parts = parseUdpmUrl(url);
+  if (parts.port + offset > 65535) {
+    throw std::invalid_argument("--lcm-url '" + url + "': port " + std::to_string(parts.port) +
+                                " leaves no room for the " + std::to_string(offset) +
+                                " ports above it of the split bus layout");
   }
-  return std::string(kUdpmScheme) + address + ":" + std::to_string(port + offset) + url.substr(options_start);
+  return std::string(kUdpmScheme) + parts.address + ":" + std::to_string(parts.port + offset) +
+         (parts.options.empty() ? "" : "?" + parts.options);
 }
 
 std::string channelUrl(BusLayout layout, const std::string& base_url, std::string_view channel) {

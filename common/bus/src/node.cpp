@@ -1,6 +1,7 @@
 #include "sdlqr/bus/node.hpp"
 
 #include <poll.h>
+#include <regex.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -18,6 +19,7 @@
 
 #include "sdlqr/heartbeat_t.hpp"
 #include "sdlqr/bus/watchdog_report.hpp"
+#include "udpm_inbox.hpp"
 
 namespace sdlqr::bus {
 
@@ -109,6 +111,13 @@ Node::Node(std::string process, const ProcessOptions& options)
   endpoint(base_url_);
   reject_decode_ = counters_.add("reject.decode");
   reject_size_ = counters_.add("reject.size");
+  if (isUdpmUrl(base_url_)) {
+    // Datagrams its sockets read, against `received` (messages handed to handlers).
+    bus_datagrams_ = counters_.add("bus.datagrams");
+    bus_malformed_ = counters_.add("bus.malformed");
+    bus_superseded_ = counters_.add("bus.superseded");  // a newer one of the same batch went instead
+    bus_unrouted_ = counters_.add("bus.unrouted");      // no subscription of this process wants it
+  }
   if (const char* spec = std::getenv("SDLQR_FAULTS"); spec != nullptr && spec[0] != '\0') {
     setFaultInjection(FaultInjection::parse(spec));
   }
@@ -124,6 +133,8 @@ Node::Node(std::string process, const ProcessOptions& options)
 }
 
 Node::~Node() = default;
+Node::Endpoint::Endpoint() = default;
+Node::Endpoint::~Endpoint() = default;
 
 namespace {
 
@@ -133,9 +144,31 @@ using PollSet = std::array<pollfd, kMaxEndpoints>;
 // The notify descriptor of each receiving connection (LCM makes it readable per message).
 template <class Endpoints>
 size_t fillPollSet(const Endpoints& receiving, PollSet& fds) {
-  for (size_t i = 0; i < receiving.size(); ++i) fds[i] = {receiving[i]->lcm->getFileno(), POLLIN, 0};
+  for (size_t i = 0; i < receiving.size(); ++i) {
+    const auto& e = *receiving[i];
+    fds[i] = {e.inbox ? e.inbox->fd() : e.lcm->getFileno(), POLLIN, 0};
+  }
   return receiving.size();
 }
+
+// LCM's channel regex semantics (POSIX extended, the whole name must match).
+bool channelMatches(const std::string& pattern, const std::string& channel) {
+  regex_t compiled;
+  if (regcomp(&compiled, ("^(" + pattern + ")$").c_str(), REG_EXTENDED | REG_NOSUB) != 0) return false;
+  const bool match = regexec(&compiled, channel.c_str(), 0, nullptr, 0) == 0;
+  regfree(&compiled);
+  return match;
+}
+
+void checkChannelPattern(const std::string& pattern) {
+  regex_t compiled;
+  if (regcomp(&compiled, ("^(" + pattern + ")$").c_str(), REG_EXTENDED | REG_NOSUB) != 0) {
+    throw std::invalid_argument("channel pattern '" + pattern + "' is not a valid regex");
+  }
+  regfree(&compiled);
+}
+
+constexpr size_t kMaxCachedChannels = 256;  // distinct names remembered per connection
 
 }  // namespace
 
@@ -156,8 +189,71 @@ Node::Endpoint& Node::endpoint(const std::string& url) {
 
 void Node::markReceiving(Endpoint& e) {
   if (e.receiving) return;
+  if (isUdpmUrl(e.url)) {
+    e.inbox = std::make_unique<UdpmInbox>(e.url);
+    e.batch.reserve(UdpmInbox::kMaxBatch);
+    e.batch_routes.reserve(UdpmInbox::kMaxBatch);
+    e.routes_by_channel.reserve(kMaxCachedChannels);
+    e.uncached.resize(UdpmInbox::kMaxBatch);
+  }
   e.receiving = true;
   receiving_.push_back(&e);
+}
+
+void Node::addRoute(Endpoint& e, Route route) {
+  e.routes.push_back(std::move(route));
+  e.pending.assign(e.routes.size(), 0);
+  e.routes_by_channel.clear();  // recomputed with the new route
+}
+
+const Node::ChannelRoutes* Node::routesOf(Endpoint& e, std::string_view channel, size_t batch_index) {
+  for (const ChannelRoutes& known : e.routes_by_channel) {
+    if (known.channel == channel) return &known;
+  }
+  // Remembered while there is room (reserved: pointers of the batch stay valid); past that, a
+  // flood of names is matched message by message.
+  const bool cached = e.routes_by_channel.size() < kMaxCachedChannels;
+  ChannelRoutes& entry = cached ? e.routes_by_channel.emplace_back() : e.uncached[batch_index];
+  entry.channel = std::string(channel);
+  entry.routes.clear();
+  for (size_t i = 0; i < e.routes.size(); ++i) {
+    const Route& r = e.routes[i];
+    if (r.typed != nullptr ? r.channel == channel : channelMatches(r.raw->pattern, entry.channel)) {
+      entry.routes.push_back(static_cast<int>(i));
+    }
+  }
+  return &entry;
+}
+
+bool Node::drainInbox(Endpoint& e) {
+  if (!e.inbox->drain(&e.batch)) return false;
+  // Queue capacity: of the batch, a route gets only its newest `capacity` messages.
+  e.batch_routes.clear();
+  for (const WireMessage& m : e.batch) {
+    const ChannelRoutes* routes = routesOf(e, m.channel, e.batch_routes.size());
+    e.batch_routes.push_back(routes);
+    for (int r : routes->routes) ++e.pending[static_cast<size_t>(r)];
+    if (routes->routes.empty()) counters_.increment(bus_unrouted_);
+  }
+  for (size_t i = 0; i < e.batch.size(); ++i) {
+    const WireMessage& m = e.batch[i];
+    const ChannelRoutes& routes = *e.batch_routes[i];
+    for (int r : routes.routes) {
+      const Route& route = e.routes[static_cast<size_t>(r)];
+      const int newer = --e.pending[static_cast<size_t>(r)];
+      if (route.capacity > 0 && newer >= route.capacity) {
+        counters_.increment(bus_superseded_);
+        continue;
+      }
+      if (route.typed != nullptr) {
+        deliverTyped(*route.typed, m.data, m.size);
+      } else {
+        ++received_;
+        route.raw->handler(routes.channel, m.data, m.size, m.receive_utime);
+      }
+    }
+  }
+  return true;
 }
 
 std::vector<std::string> Node::receiveUrls() const {
@@ -168,11 +264,15 @@ std::vector<std::string> Node::receiveUrls() const {
 
 void Node::dispatch(const lcm_recv_buf_t* rbuf, const char*, void* sub) {
   auto* subscription = static_cast<SubscriptionBase*>(sub);
-  if (subscription->node->faults_.enabled()) {
-    subscription->node->injectFault(*subscription, rbuf->data, rbuf->data_size);
+  subscription->node->deliverTyped(*subscription, rbuf->data, rbuf->data_size);
+}
+
+void Node::deliverTyped(SubscriptionBase& sub, const void* data, uint32_t size) {
+  if (faults_.enabled()) {
+    injectFault(sub, data, size);
     return;
   }
-  subscription->onMessage(rbuf->data, rbuf->data_size);
+  sub.onMessage(data, size);
 }
 
 void Node::setFaultInjection(const FaultInjection& faults) {
@@ -267,8 +367,18 @@ void Node::subscribeRaw(const std::string& pattern, RawHandler handler, int queu
   auto sub = std::make_unique<RawSubscription>();
   sub->node = this;
   sub->handler = std::move(handler);
+  sub->pattern = pattern;
   for (const std::string& url : layoutUrls(layout_, base_url_)) {
     Endpoint& e = endpoint(url);
+    if (isUdpmUrl(url)) {
+      checkChannelPattern(pattern);
+      markReceiving(e);
+      Route route;
+      route.raw = sub.get();
+      route.capacity = std::max(0, queue_capacity);
+      addRoute(e, std::move(route));
+      continue;
+    }
     lcm::Subscription* handle = e.lcm->subscribeFunction(pattern, &Node::dispatchRaw, sub.get());
     if (handle == nullptr) throw std::runtime_error("cannot subscribe to '" + pattern + "' on " + url);
     if (queue_capacity > 0) handle->setQueueCapacity(queue_capacity);
@@ -279,13 +389,23 @@ void Node::subscribeRaw(const std::string& pattern, RawHandler handler, int queu
 
 void Node::addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity) {
   sub->node = this;
+  Endpoint& e = endpointFor(channel);
+  if (isUdpmUrl(e.url)) {
+    markReceiving(e);
+    Route route;
+    route.channel = channel;
+    route.typed = sub.get();
+    route.capacity = std::max(0, queue_capacity);
+    addRoute(e, std::move(route));
+    subscriptions_.push_back(std::move(sub));
+    return;
+  }
   // The channel is used as an exact name: escape regex characters LCM would interpret.
   std::string pattern;
   for (char c : channel) {
     if (std::string_view(".[]()*+?^$|\\{}").find(c) != std::string_view::npos) pattern.push_back('\\');
     pattern.push_back(c);
   }
-  Endpoint& e = endpointFor(channel);
   lcm_subscription_t* handle = lcm_subscribe(e.lcm->getUnderlyingLCM(), pattern.c_str(), &Node::dispatch, sub.get());
   if (!handle) throw std::runtime_error("cannot subscribe to " + channel);
   if (queue_capacity > 0) lcm_subscription_set_queue_capacity(handle, queue_capacity);
@@ -330,7 +450,8 @@ int Node::handleReady(int timeout_ms) {
   int handled = 0;
   for (size_t i = 0; i < count; ++i) {
     if ((fds[i].revents & POLLIN) == 0) continue;
-    if (lcm_handle(receiving_[i]->lcm->getUnderlyingLCM()) != 0) return -1;
+    Endpoint& e = *receiving_[i];
+    if (e.inbox ? !drainInbox(e) : lcm_handle(e.lcm->getUnderlyingLCM()) != 0) return -1;
     ++handled;
   }
   return handled;
@@ -358,6 +479,17 @@ void Node::publishHeartbeat() {
   if (window > 0.05) {
     cpu_window_start_ = now;
     cpu_seconds_at_window_start_ = cpu_now;
+  }
+
+  if (bus_datagrams_ >= 0) {
+    int64_t datagrams = 0, malformed = 0;
+    for (const Endpoint* e : receiving_) {
+      if (!e->inbox) continue;
+      datagrams += e->inbox->datagrams();
+      malformed += e->inbox->malformed();
+    }
+    counters_.set(bus_datagrams_, datagrams);
+    counters_.set(bus_malformed_, malformed);
   }
 
   heartbeat_t hb;

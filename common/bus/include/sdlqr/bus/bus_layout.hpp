@@ -23,6 +23,16 @@ std::string resolveLcmUrl(const std::string& url);
 // carries every channel on its one URL whatever the layout.
 bool isUdpmUrl(const std::string& url);
 
+// The parts of udpm://ADDR:PORT?OPTIONS (ADDR and PORT default to LCM's 239.255.76.67 and
+// 7667; options is the text after '?', or empty). Throws std::invalid_argument naming --lcm-url
+// on a port that is not a number in [0, 65535]; url must be a udpm:// URL.
+struct UdpmUrl {
+  std::string address;
+  int port = 0;
+  std::string options;
+};
+UdpmUrl parseUdpmUrl(const std::string& url);
+
 // udpm://ADDR:PORT?OPTIONS with PORT raised by `offset` (ADDR and PORT default to LCM's
 // 239.255.76.67 and 7667); any other URL is returned unchanged. Throws std::invalid_argument
 // naming --lcm-url on a malformed udpm URL or a port past 65535.

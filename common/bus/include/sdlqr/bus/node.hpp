@@ -8,8 +8,11 @@
 // FaultInjection, enabled by the SDLQR_FAULTS environment variable or setFaultInjection().
 // Algorithm code never sees this header; mains hand plain structs (common/messages.hpp) on.
 // Bus layout (bus_layout.hpp): under the split layout a channel travels on the port the layout
-// gives it, so the Node opens one lcm::LCM per URL it subscribes or publishes on, and polls
+// gives it, so the Node opens one connection per URL it subscribes or publishes on, and polls
 // the ones it subscribes on together; a URL it only publishes on never opens a receive socket.
+// It publishes with LCM; on udpm:// it reads its sockets itself, in the calling thread
+// (src/udpm_inbox.hpp says why), every datagram ready at once, and a subscription of queue
+// capacity N gets only the newest N of its channel's messages of that batch.
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -27,6 +30,9 @@
 #include "sdlqr/config/cli.hpp"
 
 namespace sdlqr::bus {
+
+class UdpmInbox;
+struct WireMessage;
 
 enum class ProcessState : int8_t { kStarting = 0, kRunning = 1, kDegraded = 2, kFailsafe = 3, kStopping = 4 };
 
@@ -176,6 +182,7 @@ class Node {
   struct RawSubscription {
     Node* node = nullptr;
     RawHandler handler;
+    std::string pattern;  // LCM regex, anchored
   };
   // C callback: LCM's C++ wrapper would build a std::string of the channel for every message.
   static void dispatch(const lcm_recv_buf_t* rbuf, const char* channel, void* sub);
@@ -185,11 +192,31 @@ class Node {
   void deliverDueMessages();
   int millisecondsToNextDue(int timeout_ms) const;
   void addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity);
-  // One connection per URL; receiving once something subscribed on it (LCM then runs a receive
-  // thread with its own socket bound to the URL's port).
+  // Who gets the messages of a udpm endpoint: a typed subscription (exact channel) or a raw one.
+  struct Route {
+    std::string channel;  // typed: the full name
+    SubscriptionBase* typed = nullptr;
+    RawSubscription* raw = nullptr;
+    int capacity = 0;  // newest messages of a batch delivered; 0: all
+  };
+  // The routes a channel name goes to, found once per name.
+  struct ChannelRoutes {
+    std::string channel;
+    std::vector<int> routes;
+  };
+  // One connection per URL, receiving once something subscribed on it.
   struct Endpoint {
+    Endpoint();
+    ~Endpoint();
     std::string url;
-    std::unique_ptr<lcm::LCM> lcm;
+    std::unique_ptr<lcm::LCM> lcm;       // publishing; receiving too on other providers than udpm
+    std::unique_ptr<UdpmInbox> inbox;    // udpm receiving
+    std::vector<Route> routes;
+    std::vector<ChannelRoutes> routes_by_channel;
+    std::vector<ChannelRoutes> uncached;  // per message of a batch, once routes_by_channel is full
+    std::vector<int> pending;            // per route, scratch of one batch
+    std::vector<WireMessage> batch;
+    std::vector<const ChannelRoutes*> batch_routes;
     bool receiving = false;
   };
   Endpoint& endpoint(const std::string& url);
@@ -203,9 +230,13 @@ class Node {
     lcm::LCM* lcm = nullptr;
   };
   const PublishChannel& publishChannel(std::string_view base);
-  // Polls every receiving connection for up to timeout_ms and handles one message on each ready
-  // one; returns the number handled, or -1 on an error.
+  // Polls every receiving connection for up to timeout_ms and handles what is ready on each
+  // ready one; returns the number of connections handled, or -1 on an error.
   int handleReady(int timeout_ms);
+  bool drainInbox(Endpoint& e);
+  const ChannelRoutes* routesOf(Endpoint& e, std::string_view channel, size_t batch_index);
+  void addRoute(Endpoint& e, Route route);
+  void deliverTyped(SubscriptionBase& sub, const void* data, uint32_t size);
 
   std::string process_;
   std::string vehicle_;
@@ -231,6 +262,10 @@ class Node {
   std::vector<std::vector<uint8_t>> spare_buffers_;
   Counters::Id fault_dropped_ = -1;
   Counters::Id fault_delayed_ = -1;
+  Counters::Id bus_datagrams_ = -1;
+  Counters::Id bus_malformed_ = -1;
+  Counters::Id bus_superseded_ = -1;
+  Counters::Id bus_unrouted_ = -1;
   ProcessState state_ = ProcessState::kStarting;
   int64_t sim_utime_ = 0;
   int64_t received_ = 0;
