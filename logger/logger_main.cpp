@@ -164,7 +164,7 @@ int runRecord(int argc, const char* const* argv) {
   publishStats(node, ids, recorder.stats());
   node.shutdown();
   const auto drain_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
-  while (std::chrono::steady_clock::now() < drain_until) node.lcm().handleTimeout(20);
+  while (std::chrono::steady_clock::now() < drain_until) node.drain(20);
   recorder.stop();
   const sdlqr::logger::RecorderStats s = recorder.stats();
   std::cout << kProgram << ": wrote " << s.written << " messages (" << s.bytes_written << " bytes) to "

@@ -355,7 +355,15 @@ const Node::PublishChannel& Node::publishChannel(std::string_view base) {
 }
 
 void Node::publishEncoded(const std::string& channel, const void* data, int size) {
-  publishRaw(*endpointFor(channel).lcm, channel, data, size);
+  for (const auto& [known, lcm] : encoded_channels_) {
+    if (known == channel) {
+      publishRaw(*lcm, channel, data, size);
+      return;
+    }
+  }
+  lcm::LCM& lcm = *endpointFor(channel).lcm;
+  if (encoded_channels_.size() < 256) encoded_channels_.emplace_back(channel, &lcm);  // a flood of names is not kept
+  publishRaw(lcm, channel, data, size);
 }
 
 void Node::dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub) {
@@ -455,6 +463,11 @@ int Node::handleReady(int timeout_ms) {
     ++handled;
   }
   return handled;
+}
+
+void Node::drain(int timeout_ms) {
+  if (handleReady(millisecondsToNextDue(timeout_ms)) < 0) countError();
+  deliverDueMessages();
 }
 
 bool Node::waitReadable(std::chrono::steady_clock::duration timeout) {

@@ -120,6 +120,9 @@ class Node {
   // Waits up to `timeout` (finer than spin's milliseconds) until a message is ready on any
   // subscribed URL, handling nothing; true when one is. Without subscriptions it just sleeps.
   bool waitReadable(std::chrono::steady_clock::duration timeout);
+  // Handles messages for up to timeout_ms even after a stop signal, publishing nothing: for a
+  // recorder taking in the last messages (its own STOPPING heartbeat) before it closes.
+  void drain(int timeout_ms);
   bool running() const;
   // For a main that ends itself (e.g. a duration elapsed): publishes a last STOPPING heartbeat.
   void shutdown();
@@ -247,6 +250,7 @@ class Node {
   std::vector<std::unique_ptr<RawSubscription>> raw_subscriptions_;
   std::vector<uint8_t> encode_buffer_;
   std::vector<PublishChannel> publish_channels_;
+  std::vector<std::pair<std::string, lcm::LCM*>> encoded_channels_;  // publishEncoded's, found once
   std::vector<Endpoint*> receiving_;  // the endpoints handleReady polls
   Counters counters_;
   Counters::Id reject_decode_;
