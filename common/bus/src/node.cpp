@@ -115,7 +115,7 @@ Node::Node(std::string process, const ProcessOptions& options)
     // Datagrams its sockets read, against `received` (messages handed to handlers).
     bus_datagrams_ = counters_.add("bus.datagrams");
     bus_malformed_ = counters_.add("bus.malformed");
-    bus_superseded_ = counters_.add("bus.superseded");  // a newer one of the same batch went instead
+    bus_over_capacity_ = counters_.add("bus.over_capacity");  // queue full: dropped on arrival
     bus_unrouted_ = counters_.add("bus.unrouted");      // no subscription of this process wants it
   }
   if (const char* spec = std::getenv("SDLQR_FAULTS"); spec != nullptr && spec[0] != '\0') {
@@ -192,7 +192,6 @@ void Node::markReceiving(Endpoint& e) {
   if (isUdpmUrl(e.url)) {
     e.inbox = std::make_unique<UdpmInbox>(e.url);
     e.batch.reserve(UdpmInbox::kMaxBatch);
-    e.batch_routes.reserve(UdpmInbox::kMaxBatch);
     e.routes_by_channel.reserve(kMaxCachedChannels);
     e.uncached.resize(UdpmInbox::kMaxBatch);
   }
@@ -202,7 +201,7 @@ void Node::markReceiving(Endpoint& e) {
 
 void Node::addRoute(Endpoint& e, Route route) {
   e.routes.push_back(std::move(route));
-  e.pending.assign(e.routes.size(), 0);
+  e.delivered.assign(e.routes.size(), 0);
   e.routes_by_channel.clear();  // recomputed with the new route
 }
 
@@ -227,24 +226,20 @@ const Node::ChannelRoutes* Node::routesOf(Endpoint& e, std::string_view channel,
 
 bool Node::drainInbox(Endpoint& e) {
   if (!e.inbox->drain(&e.batch)) return false;
-  // Queue capacity: of the batch, a route gets only its newest `capacity` messages.
-  e.batch_routes.clear();
+  // Queue capacity as LCM's: of the messages waiting (the batch) a route gets its first
+  // `capacity`, later ones are dropped. A controller predicting forward from the estimate before
+  // its tick needs the older one (the newer may lie past the tick).
+  std::fill(e.delivered.begin(), e.delivered.end(), 0);
   for (const WireMessage& m : e.batch) {
-    const ChannelRoutes* routes = routesOf(e, m.channel, e.batch_routes.size());
-    e.batch_routes.push_back(routes);
-    for (int r : routes->routes) ++e.pending[static_cast<size_t>(r)];
-    if (routes->routes.empty()) counters_.increment(bus_unrouted_);
-  }
-  for (size_t i = 0; i < e.batch.size(); ++i) {
-    const WireMessage& m = e.batch[i];
-    const ChannelRoutes& routes = *e.batch_routes[i];
+    const ChannelRoutes& routes = *routesOf(e, m.channel, static_cast<size_t>(&m - e.batch.data()));
+    if (routes.routes.empty()) counters_.increment(bus_unrouted_);
     for (int r : routes.routes) {
       const Route& route = e.routes[static_cast<size_t>(r)];
-      const int newer = --e.pending[static_cast<size_t>(r)];
-      if (route.capacity > 0 && newer >= route.capacity) {
-        counters_.increment(bus_superseded_);
+      if (route.capacity > 0 && e.delivered[static_cast<size_t>(r)] >= route.capacity) {
+        counters_.increment(bus_over_capacity_);
         continue;
       }
+      ++e.delivered[static_cast<size_t>(r)];
       if (route.typed != nullptr) {
         deliverTyped(*route.typed, m.data, m.size);
       } else {

@@ -11,8 +11,8 @@
 // gives it, so the Node opens one connection per URL it subscribes or publishes on, and polls
 // the ones it subscribes on together; a URL it only publishes on never opens a receive socket.
 // It publishes with LCM; on udpm:// it reads its sockets itself, in the calling thread
-// (src/udpm_inbox.hpp says why), every datagram ready at once, and a subscription of queue
-// capacity N gets only the newest N of its channel's messages of that batch.
+// (src/udpm_inbox.hpp says why), every datagram ready at once; a subscription of queue
+// capacity N gets the first N of its channel's messages waiting, later ones are dropped (as LCM).
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -90,7 +90,8 @@ class Node {
 
   // Decodes each message of `base` as T and calls handler(msg). A message that fails to decode
   // is counted as rejected ("reject.decode") and never reaches the handler. Gaps in `seq` count
-  // as dropped. queue_capacity 1 keeps only the newest message for control channels. A handler
+  // as dropped. queue_capacity 1: while a message waits to be handled, newer ones are dropped
+  // (LCM's semantics), so a control loop never works through a backlog. A handler
   // that runs longer than a non-zero `budget` (wall time) counts as a deadline miss in HEARTBEAT.
   template <class T>
   void subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity = 1,
@@ -217,9 +218,8 @@ class Node {
     std::vector<Route> routes;
     std::vector<ChannelRoutes> routes_by_channel;
     std::vector<ChannelRoutes> uncached;  // per message of a batch, once routes_by_channel is full
-    std::vector<int> pending;            // per route, scratch of one batch
+    std::vector<int> delivered;          // per route, scratch of one batch
     std::vector<WireMessage> batch;
-    std::vector<const ChannelRoutes*> batch_routes;
     bool receiving = false;
   };
   Endpoint& endpoint(const std::string& url);
@@ -268,7 +268,7 @@ class Node {
   Counters::Id fault_delayed_ = -1;
   Counters::Id bus_datagrams_ = -1;
   Counters::Id bus_malformed_ = -1;
-  Counters::Id bus_superseded_ = -1;
+  Counters::Id bus_over_capacity_ = -1;
   Counters::Id bus_unrouted_ = -1;
   ProcessState state_ = ProcessState::kStarting;
   int64_t sim_utime_ = 0;
