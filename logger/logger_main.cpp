@@ -117,6 +117,7 @@ int runRecord(int argc, const char* const* argv) {
   parser.addOption("--lcm-url", &process.lcm_url, "URL",
                    "LCM provider (default: $LCM_DEFAULT_URL or udpm://239.255.76.67:7667?ttl=0)");
   parser.addOption("--vehicle", &process.vehicle, "PREFIX", "vehicle to record; also prefixes this logger's HEARTBEAT");
+  sdlqr::addBusLayoutOption(parser, &process);
   parser.setEpilog(
       "Other mode: sdlqr-logger export LOG --out DIR   (CSV per channel + metrics.json; see export --help)\n\n"
       "exit codes: 0 recorded, 1 write errors or fatal error, 2 bad arguments or the file exists");
@@ -163,7 +164,7 @@ int runRecord(int argc, const char* const* argv) {
   publishStats(node, ids, recorder.stats());
   node.shutdown();
   const auto drain_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
-  while (std::chrono::steady_clock::now() < drain_until) node.lcm().handleTimeout(20);
+  while (std::chrono::steady_clock::now() < drain_until) node.drain(20);
   recorder.stop();
   const sdlqr::logger::RecorderStats s = recorder.stats();
   std::cout << kProgram << ": wrote " << s.written << " messages (" << s.bytes_written << " bytes) to "

@@ -10,6 +10,7 @@
 #include "sdlqr/mission/trajectory_request.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
+#include "sdlqr/sim_clock_t.hpp"
 
 using namespace sdlqr;
 
@@ -57,11 +58,11 @@ int main(int argc, char** argv) {
     std::vector<std::string> positional;
     ArgParser parser("sdlqr-mission",
                      "Scenario player: publishes COMMAND, TRAJECTORY, DISTURBANCE and PARAMS at the times of a\n"
-                     "scenario file, using the IMU's utime as the clock. Exits 0 when the scenario's duration\n"
+                     "scenario file, using SIM_CLOCK's utime as the clock. Exits 0 when the scenario's duration\n"
                      "of simulation time has passed.");
     addProcessOptions(parser, &options);
     parser.addOption("--no-clock-timeout", &no_clock_timeout, "S",
-                     "give up (exit 1) when no IMU arrives for this many wall seconds (default 10)");
+                     "give up (exit 1) when no SIM_CLOCK arrives for this many wall seconds (default 10)");
     double resend_interval = 1.0;
     parser.addOption("--resend-interval", &resend_interval, "S",
                      "re-send the current TAKEOFF/GOTO every S s of simulation time, for a restarted\n"
@@ -104,9 +105,9 @@ int main(int argc, char** argv) {
     // One sequence per channel: subscribers count gaps in seq as lost messages.
     int64_t command_seq = 0, disturbance_seq = 0, params_seq = 0, trajectory_seq = 0;
     bool finished = false;
-    bus.subscribe<imu_t>(channel::kImu, [&](const imu_t& imu) {
-      if (imu.utime <= now_utime) return;
-      now_utime = imu.utime;
+    bus.subscribe<sim_clock_t>(channel::kSimClock, [&](const sim_clock_t& clock) {
+      if (clock.utime <= now_utime) return;
+      now_utime = clock.utime;
       bus.setSimTime(now_utime);
     });
 
@@ -122,7 +123,7 @@ int main(int argc, char** argv) {
         last_clock = wall_now;
         bus.setState(bus::ProcessState::kRunning);
       } else if (std::chrono::duration<double>(wall_now - last_clock).count() > no_clock_timeout) {
-        std::fprintf(stderr, "sdlqr-mission: no IMU for %.0f s: is sdlqr-sim running on this bus?\n",
+        std::fprintf(stderr, "sdlqr-mission: no SIM_CLOCK for %.0f s: is sdlqr-sim running on this bus?\n",
                      no_clock_timeout);
         bus.shutdown();
         return 1;

@@ -2,8 +2,6 @@
 // against the wall clock by --rate, applies MOTOR_CMD and DISTURBANCE between steps, and
 // publishes IMU, VIO_POSE and SIM_TRUTH stamped with the simulation time it owns.
 
-#include <sys/select.h>
-
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -16,6 +14,7 @@
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
 #include "sdlqr/sim/simulator.hpp"
+#include "sdlqr/sim_clock_t.hpp"
 
 namespace sdlqr {
 namespace {
@@ -25,6 +24,9 @@ using Clock = std::chrono::steady_clock;
 // After a stall the schedule restarts from now instead of replaying every missed step at once:
 // a burst of hundreds of IMU samples would be worse for the stack than a short slow-down.
 constexpr int64_t kMaxCatchUpSteps = 20;
+// SIM_CLOCK: the scenario player's clock, at every 10 ms of simulation time (its events are
+// given to the centisecond; the 1 kHz IMU would cost the player 10 times as many wake-ups).
+constexpr int64_t kClockPeriodUs = 10000;
 
 struct Options {
   ProcessOptions process;
@@ -51,24 +53,12 @@ Options parseOptions(int argc, char** argv) {
   return o;
 }
 
-bool waitReadable(int fd, Clock::duration timeout) {
-  const auto us = std::chrono::duration_cast<std::chrono::microseconds>(timeout).count();
-  timeval tv{};
-  tv.tv_sec = static_cast<time_t>(us / 1000000);
-  tv.tv_usec = static_cast<suseconds_t>(us % 1000000);
-  fd_set readable;
-  FD_ZERO(&readable);
-  FD_SET(fd, &readable);
-  return select(fd + 1, &readable, nullptr, nullptr, &tv) > 0;
-}
-
 // Handles messages as they arrive until the deadline, so a MOTOR_CMD reaches the next step.
 void serviceBusUntil(bus::Node& node, Clock::time_point deadline) {
-  const int fd = node.lcm().getFileno();
   while (node.running()) {
     const auto remaining = deadline - Clock::now();
     if (remaining <= Clock::duration::zero()) break;
-    if (waitReadable(fd, remaining)) node.spin(0);
+    if (node.waitReadable(remaining)) node.spin(0);
   }
 }
 
@@ -136,6 +126,8 @@ int run(int argc, char** argv) {
   int64_t anchor_step = simulator.stepCount();
   int64_t deadline_misses = 0;
   bool crash_reported = false;
+  sim_clock_t sim_clock{};
+  sim_clock.period_us = kClockPeriodUs;
   node.setState(bus::ProcessState::kRunning);
   node.setSimTime(simulator.utime());
   node.publishHeartbeat();
@@ -161,6 +153,11 @@ int run(int argc, char** argv) {
     if (out.imu) node.publish(channel::kImu, bus::toLcm(*out.imu));
     if (out.vio) node.publish(channel::kVioPose, bus::toLcm(*out.vio));
     if (out.truth) node.publish(channel::kSimTruth, bus::toLcm(*out.truth));
+    if (simulator.utime() % kClockPeriodUs == 0) {
+      sim_clock.utime = simulator.utime();
+      node.publish(channel::kSimClock, sim_clock);
+      ++sim_clock.seq;
+    }
     if (simulator.crashed() && !crash_reported) {
       crash_reported = true;
       counters.increment(crashes);

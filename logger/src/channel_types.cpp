@@ -19,6 +19,7 @@ const std::vector<ChannelType>& channelTypes() {
       {channel::kCommand, MessageType::kCommand, "command_t"},
       {channel::kHeartbeat, MessageType::kHeartbeat, "heartbeat_t"},
       {channel::kSimTruth, MessageType::kSimTruth, "sim_truth_t"},
+      {channel::kSimClock, MessageType::kSimClock, "sim_clock_t"},
   };
   return table;
 }

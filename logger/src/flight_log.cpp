@@ -18,6 +18,7 @@ auto toPlain(const LcmType& m) {
   return bus::fromLcm(m);
 }
 HeartbeatRecord toPlain(const heartbeat_t& m) { return toHeartbeatRecord(m); }
+SimClockTick toPlain(const sim_clock_t& m) { return {m.utime, m.seq, m.period_us}; }
 
 template <class LcmType, class Plain>
 bool decodeAs(const LogEvent& event, Plain* out) {
@@ -55,6 +56,7 @@ void decode(MessageType type, const LogEvent& e, FlightLog& log, ChannelTimeline
     case MessageType::kCommand: decodeInto<command_t>(e, log.command, t); break;
     case MessageType::kHeartbeat: decodeInto<heartbeat_t>(e, log.heartbeat, t); break;
     case MessageType::kSimTruth: decodeInto<sim_truth_t>(e, log.sim_truth, t); break;
+    case MessageType::kSimClock: decodeInto<sim_clock_t>(e, log.sim_clock, t); break;
   }
 }
 

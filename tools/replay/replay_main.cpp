@@ -45,7 +45,7 @@ class OutputWriter {
     event.data = buffer_.data();
     if (log_.writeEvent(&event) != 0) throw std::runtime_error("cannot write the replay log");
     ++written_;
-    if (bus_ != nullptr) bus_->lcm().publish(channel, buffer_.data(), static_cast<unsigned>(buffer_.size()));
+    if (bus_ != nullptr) bus_->publishEncoded(channel, buffer_.data(), static_cast<int>(buffer_.size()));
   }
   int64_t written() const { return written_; }
 

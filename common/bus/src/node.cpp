@@ -1,10 +1,14 @@
 #include "sdlqr/bus/node.hpp"
 
+#include <poll.h>
+#include <regex.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <cerrno>
 #include <cctype>
 #include <cmath>
 #include <csignal>
@@ -15,6 +19,7 @@
 
 #include "sdlqr/heartbeat_t.hpp"
 #include "sdlqr/bus/watchdog_report.hpp"
+#include "udpm_inbox.hpp"
 
 namespace sdlqr::bus {
 
@@ -99,13 +104,20 @@ Node::Node(std::string process, const ProcessOptions& options)
       throw std::invalid_argument("--vehicle: use letters, digits, '_' or '-' only, got '" + vehicle_ + "'");
     }
   }
-  lcm_ = std::make_unique<lcm::LCM>(options.lcm_url);
-  if (!lcm_->good()) {
-    throw std::runtime_error("cannot open LCM bus '" + (options.lcm_url.empty() ? std::string("default") : options.lcm_url) +
-                             "' (is multicast routed? see README, Troubleshooting)");
-  }
+  base_url_ = resolveLcmUrl(options.lcm_url);
+  // Without ports to separate channels every layout is the single one.
+  layout_ = isUdpmUrl(base_url_) ? parseBusLayout(options.bus_layout) : BusLayout::kSingle;
+  base_url_ = urlWithPortOffset(base_url_, 0);
+  endpoint(base_url_);
   reject_decode_ = counters_.add("reject.decode");
   reject_size_ = counters_.add("reject.size");
+  if (isUdpmUrl(base_url_)) {
+    // Datagrams its sockets read, against `received` (messages handed to handlers).
+    bus_datagrams_ = counters_.add("bus.datagrams");
+    bus_malformed_ = counters_.add("bus.malformed");
+    bus_over_capacity_ = counters_.add("bus.over_capacity");  // queue full: dropped on arrival
+    bus_unrouted_ = counters_.add("bus.unrouted");      // no subscription of this process wants it
+  }
   if (const char* spec = std::getenv("SDLQR_FAULTS"); spec != nullptr && spec[0] != '\0') {
     setFaultInjection(FaultInjection::parse(spec));
   }
@@ -121,14 +133,141 @@ Node::Node(std::string process, const ProcessOptions& options)
 }
 
 Node::~Node() = default;
+Node::Endpoint::Endpoint() = default;
+Node::Endpoint::~Endpoint() = default;
+
+namespace {
+
+constexpr size_t kMaxEndpoints = 16;  // the split layout has 8 URLs
+using PollSet = std::array<pollfd, kMaxEndpoints>;
+
+// The notify descriptor of each receiving connection (LCM makes it readable per message).
+template <class Endpoints>
+size_t fillPollSet(const Endpoints& receiving, PollSet& fds) {
+  for (size_t i = 0; i < receiving.size(); ++i) {
+    const auto& e = *receiving[i];
+    fds[i] = {e.inbox ? e.inbox->fd() : e.lcm->getFileno(), POLLIN, 0};
+  }
+  return receiving.size();
+}
+
+// LCM's channel regex semantics (POSIX extended, the whole name must match).
+bool channelMatches(const std::string& pattern, const std::string& channel) {
+  regex_t compiled;
+  if (regcomp(&compiled, ("^(" + pattern + ")$").c_str(), REG_EXTENDED | REG_NOSUB) != 0) return false;
+  const bool match = regexec(&compiled, channel.c_str(), 0, nullptr, 0) == 0;
+  regfree(&compiled);
+  return match;
+}
+
+void checkChannelPattern(const std::string& pattern) {
+  regex_t compiled;
+  if (regcomp(&compiled, ("^(" + pattern + ")$").c_str(), REG_EXTENDED | REG_NOSUB) != 0) {
+    throw std::invalid_argument("channel pattern '" + pattern + "' is not a valid regex");
+  }
+  regfree(&compiled);
+}
+
+constexpr size_t kMaxCachedChannels = 256;  // distinct names remembered per connection
+
+}  // namespace
+
+Node::Endpoint& Node::endpoint(const std::string& url) {
+  for (const auto& e : endpoints_) {
+    if (e->url == url) return *e;
+  }
+  if (endpoints_.size() == kMaxEndpoints) throw std::runtime_error("more than 16 LCM URLs in one process");
+  auto e = std::make_unique<Endpoint>();
+  e->url = url;
+  e->lcm = std::make_unique<lcm::LCM>(url);
+  if (!e->lcm->good()) {
+    throw std::runtime_error("cannot open LCM bus '" + url + "' (is multicast routed? see README, Troubleshooting)");
+  }
+  endpoints_.push_back(std::move(e));
+  return *endpoints_.back();
+}
+
+void Node::markReceiving(Endpoint& e) {
+  if (e.receiving) return;
+  if (isUdpmUrl(e.url)) {
+    e.inbox = std::make_unique<UdpmInbox>(e.url);
+    e.batch.reserve(UdpmInbox::kMaxBatch);
+    e.routes_by_channel.reserve(kMaxCachedChannels);
+    e.uncached.resize(UdpmInbox::kMaxBatch);
+  }
+  e.receiving = true;
+  receiving_.push_back(&e);
+}
+
+void Node::addRoute(Endpoint& e, Route route) {
+  e.routes.push_back(std::move(route));
+  e.delivered.assign(e.routes.size(), 0);
+  e.routes_by_channel.clear();  // recomputed with the new route
+}
+
+const Node::ChannelRoutes* Node::routesOf(Endpoint& e, std::string_view channel, size_t batch_index) {
+  for (const ChannelRoutes& known : e.routes_by_channel) {
+    if (known.channel == channel) return &known;
+  }
+  // Remembered while there is room (reserved: pointers of the batch stay valid); past that, a
+  // flood of names is matched message by message.
+  const bool cached = e.routes_by_channel.size() < kMaxCachedChannels;
+  ChannelRoutes& entry = cached ? e.routes_by_channel.emplace_back() : e.uncached[batch_index];
+  entry.channel = std::string(channel);
+  entry.routes.clear();
+  for (size_t i = 0; i < e.routes.size(); ++i) {
+    const Route& r = e.routes[i];
+    if (r.typed != nullptr ? r.channel == channel : channelMatches(r.raw->pattern, entry.channel)) {
+      entry.routes.push_back(static_cast<int>(i));
+    }
+  }
+  return &entry;
+}
+
+bool Node::drainInbox(Endpoint& e) {
+  if (!e.inbox->drain(&e.batch)) return false;
+  // Queue capacity as LCM's: of the messages waiting (the batch) a route gets its first
+  // `capacity`, later ones are dropped. A controller predicting forward from the estimate before
+  // its tick needs the older one (the newer may lie past the tick).
+  std::fill(e.delivered.begin(), e.delivered.end(), 0);
+  for (const WireMessage& m : e.batch) {
+    const ChannelRoutes& routes = *routesOf(e, m.channel, static_cast<size_t>(&m - e.batch.data()));
+    if (routes.routes.empty()) counters_.increment(bus_unrouted_);
+    for (int r : routes.routes) {
+      const Route& route = e.routes[static_cast<size_t>(r)];
+      if (route.capacity > 0 && e.delivered[static_cast<size_t>(r)] >= route.capacity) {
+        counters_.increment(bus_over_capacity_);
+        continue;
+      }
+      ++e.delivered[static_cast<size_t>(r)];
+      if (route.typed != nullptr) {
+        deliverTyped(*route.typed, m.data, m.size);
+      } else {
+        ++received_;
+        route.raw->handler(routes.channel, m.data, m.size, m.receive_utime);
+      }
+    }
+  }
+  return true;
+}
+
+std::vector<std::string> Node::receiveUrls() const {
+  std::vector<std::string> urls;
+  for (const Endpoint* e : receiving_) urls.push_back(e->url);
+  return urls;
+}
 
 void Node::dispatch(const lcm_recv_buf_t* rbuf, const char*, void* sub) {
   auto* subscription = static_cast<SubscriptionBase*>(sub);
-  if (subscription->node->faults_.enabled()) {
-    subscription->node->injectFault(*subscription, rbuf->data, rbuf->data_size);
+  subscription->node->deliverTyped(*subscription, rbuf->data, rbuf->data_size);
+}
+
+void Node::deliverTyped(SubscriptionBase& sub, const void* data, uint32_t size) {
+  if (faults_.enabled()) {
+    injectFault(sub, data, size);
     return;
   }
-  subscription->onMessage(rbuf->data, rbuf->data_size);
+  sub.onMessage(data, size);
 }
 
 void Node::setFaultInjection(const FaultInjection& faults) {
@@ -198,12 +337,28 @@ int Node::millisecondsToNextDue(int timeout_ms) const {
   return timeout_ms < 0 ? wait : std::min(timeout_ms, wait);
 }
 
-const std::string& Node::publishChannel(std::string_view base) {
-  for (const auto& [known_base, full] : publish_channels_) {
-    if (known_base == base) return full;
+const Node::PublishChannel& Node::publishChannel(std::string_view base) {
+  for (const PublishChannel& known : publish_channels_) {
+    if (known.base == base) return known;
   }
-  publish_channels_.emplace_back(std::string(base), channel(base));
-  return publish_channels_.back().second;
+  PublishChannel entry;
+  entry.base = std::string(base);
+  entry.full = channel(base);
+  entry.lcm = endpointFor(base).lcm.get();
+  publish_channels_.push_back(std::move(entry));
+  return publish_channels_.back();
+}
+
+void Node::publishEncoded(const std::string& channel, const void* data, int size) {
+  for (const auto& [known, lcm] : encoded_channels_) {
+    if (known == channel) {
+      publishRaw(*lcm, channel, data, size);
+      return;
+    }
+  }
+  lcm::LCM& lcm = *endpointFor(channel).lcm;
+  if (encoded_channels_.size() < 256) encoded_channels_.emplace_back(channel, &lcm);  // a flood of names is not kept
+  publishRaw(lcm, channel, data, size);
 }
 
 void Node::dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub) {
@@ -215,22 +370,49 @@ void Node::subscribeRaw(const std::string& pattern, RawHandler handler, int queu
   auto sub = std::make_unique<RawSubscription>();
   sub->node = this;
   sub->handler = std::move(handler);
-  lcm::Subscription* handle = lcm_->subscribeFunction(pattern, &Node::dispatchRaw, sub.get());
-  if (queue_capacity > 0) handle->setQueueCapacity(queue_capacity);
+  sub->pattern = pattern;
+  for (const std::string& url : layoutUrls(layout_, base_url_)) {
+    Endpoint& e = endpoint(url);
+    if (isUdpmUrl(url)) {
+      checkChannelPattern(pattern);
+      markReceiving(e);
+      Route route;
+      route.raw = sub.get();
+      route.capacity = std::max(0, queue_capacity);
+      addRoute(e, std::move(route));
+      continue;
+    }
+    lcm::Subscription* handle = e.lcm->subscribeFunction(pattern, &Node::dispatchRaw, sub.get());
+    if (handle == nullptr) throw std::runtime_error("cannot subscribe to '" + pattern + "' on " + url);
+    if (queue_capacity > 0) handle->setQueueCapacity(queue_capacity);
+    markReceiving(e);
+  }
   raw_subscriptions_.push_back(std::move(sub));
 }
 
 void Node::addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity) {
   sub->node = this;
+  Endpoint& e = endpointFor(channel);
+  if (isUdpmUrl(e.url)) {
+    markReceiving(e);
+    Route route;
+    route.channel = channel;
+    route.typed = sub.get();
+    route.capacity = std::max(0, queue_capacity);
+    addRoute(e, std::move(route));
+    subscriptions_.push_back(std::move(sub));
+    return;
+  }
   // The channel is used as an exact name: escape regex characters LCM would interpret.
   std::string pattern;
   for (char c : channel) {
     if (std::string_view(".[]()*+?^$|\\{}").find(c) != std::string_view::npos) pattern.push_back('\\');
     pattern.push_back(c);
   }
-  lcm_subscription_t* handle = lcm_subscribe(lcm_->getUnderlyingLCM(), pattern.c_str(), &Node::dispatch, sub.get());
+  lcm_subscription_t* handle = lcm_subscribe(e.lcm->getUnderlyingLCM(), pattern.c_str(), &Node::dispatch, sub.get());
   if (!handle) throw std::runtime_error("cannot subscribe to " + channel);
   if (queue_capacity > 0) lcm_subscription_set_queue_capacity(handle, queue_capacity);
+  markReceiving(e);
   subscriptions_.push_back(std::move(sub));
 }
 
@@ -240,8 +422,8 @@ void Node::noteSequence(SubscriptionBase& sub, int64_t seq) {
   sub.last_seq = seq;
 }
 
-void Node::publishRaw(const std::string& channel, const void* data, int size) {
-  if (lcm_->publish(channel, data, static_cast<unsigned int>(size)) != 0) {
+void Node::publishRaw(lcm::LCM& lcm, const std::string& channel, const void* data, int size) {
+  if (lcm.publish(channel, data, static_cast<unsigned int>(size)) != 0) {
     countError();
     setLastError("publish failed on " + channel);
     return;
@@ -253,7 +435,7 @@ bool Node::running() const { return !g_stop_requested.load(); }
 
 bool Node::spin(int timeout_ms) {
   if (!running()) return false;
-  const int status = lcm_->handleTimeout(millisecondsToNextDue(timeout_ms));
+  const int status = handleReady(millisecondsToNextDue(timeout_ms));
   if (status < 0 && running()) {
     countError();
     setLastError("LCM handle failed");
@@ -261,6 +443,34 @@ bool Node::spin(int timeout_ms) {
   deliverDueMessages();
   if (std::chrono::steady_clock::now() >= next_heartbeat_) publishHeartbeat();
   return running();
+}
+
+int Node::handleReady(int timeout_ms) {
+  PollSet fds{};
+  const size_t count = fillPollSet(receiving_, fds);
+  const int ready = poll(fds.data(), count, timeout_ms);
+  if (ready <= 0) return ready < 0 && errno != EINTR ? -1 : 0;
+  int handled = 0;
+  for (size_t i = 0; i < count; ++i) {
+    if ((fds[i].revents & POLLIN) == 0) continue;
+    Endpoint& e = *receiving_[i];
+    if (e.inbox ? !drainInbox(e) : lcm_handle(e.lcm->getUnderlyingLCM()) != 0) return -1;
+    ++handled;
+  }
+  return handled;
+}
+
+void Node::drain(int timeout_ms) {
+  if (handleReady(millisecondsToNextDue(timeout_ms)) < 0) countError();
+  deliverDueMessages();
+}
+
+bool Node::waitReadable(std::chrono::steady_clock::duration timeout) {
+  PollSet fds{};
+  const size_t count = fillPollSet(receiving_, fds);
+  const auto ns = std::max<int64_t>(0, std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count());
+  const timespec wait{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
+  return ppoll(fds.data(), count, &wait, nullptr) > 0;
 }
 
 void Node::shutdown() {
@@ -277,6 +487,17 @@ void Node::publishHeartbeat() {
   if (window > 0.05) {
     cpu_window_start_ = now;
     cpu_seconds_at_window_start_ = cpu_now;
+  }
+
+  if (bus_datagrams_ >= 0) {
+    int64_t datagrams = 0, malformed = 0;
+    for (const Endpoint* e : receiving_) {
+      if (!e->inbox) continue;
+      datagrams += e->inbox->datagrams();
+      malformed += e->inbox->malformed();
+    }
+    counters_.set(bus_datagrams_, datagrams);
+    counters_.set(bus_malformed_, malformed);
   }
 
   heartbeat_t hb;

@@ -144,6 +144,13 @@ void addProcessOptions(ArgParser& parser, ProcessOptions* options) {
   parser.addOption("--lcm-url", &options->lcm_url, "URL",
                    "LCM provider (default: $LCM_DEFAULT_URL or udpm://239.255.76.67:7667?ttl=0)");
   parser.addOption("--vehicle", &options->vehicle, "PREFIX", "channel prefix, e.g. QUAD1 gives QUAD1/IMU");
+  addBusLayoutOption(parser, options);
+}
+
+void addBusLayoutOption(ArgParser& parser, ProcessOptions* options) {
+  parser.addOption("--bus-layout", &options->bus_layout, "single|split",
+                   "split (default): high-rate channels on ports of their own above the --lcm-url port;\n"
+                   "single: every channel on the --lcm-url port (README, Bus layout)");
 }
 
 int runMain(const std::string& program, const std::function<int()>& body) {

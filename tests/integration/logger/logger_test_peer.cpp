@@ -88,6 +88,7 @@ int publish(int argc, const char* const* argv) {
   parser.addOption("--duration", &duration_s, "S", "stop after S seconds");
   parser.addOption("--published", &published_path, "FILE", "where to list what was published");
   parser.addOption("--lcm-url", &process.lcm_url, "URL", "LCM provider");
+  addBusLayoutOption(parser, &process);
   parser.addOption("--vehicle", &process.vehicle, "PREFIX", "channel prefix");
   parser.parseOrExit(argc, argv);
   if (published_path.empty() || rate_hz <= 0.0) throw std::invalid_argument("need --published FILE and --rate > 0");

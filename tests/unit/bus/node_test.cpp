@@ -123,5 +123,36 @@ TEST(Node, AHandlerOverItsBudgetCountsADeadlineMiss) {
   EXPECT_EQ(node.deadlineMisses(), 1);
 }
 
+TEST(Node, WithoutPortsEveryLayoutIsOneConnection) {
+  // GIVEN the split layout asked for on memq:// (no ports to separate channels)
+  ProcessOptions options = memq();
+  options.bus_layout = "split";
+  Node node("test", options);
+  EXPECT_EQ(node.busLayout(), BusLayout::kSingle);
+  int imu = 0, gains = 0;
+  node.subscribe<imu_t>(channel::kImu, [&](const imu_t&) { ++imu; });
+  node.subscribe<gains_t>(channel::kGains, [&](const gains_t&) { ++gains; });
+  int raw = 0;
+  node.subscribeRaw("IMU|GAINS", [&](const std::string&, const void*, uint32_t, int64_t) { ++raw; }, 16);
+  // THEN it receives on the one URL, and publishEncoded() delivers there
+  EXPECT_EQ(node.receiveUrls(), std::vector<std::string>{"memq://"});
+  imu_t m = toLcm(ImuSample{});
+  std::vector<uint8_t> bytes(static_cast<size_t>(m.getEncodedSize()));
+  m.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  node.publishEncoded("IMU", bytes.data(), static_cast<int>(bytes.size()));
+  node.publish(channel::kGains, toLcm(GainSet{}));
+  for (int i = 0; i < 8; ++i) node.spin(0);
+  EXPECT_EQ(imu, 1);
+  EXPECT_EQ(gains, 1);
+  EXPECT_EQ(raw, 2);
+}
+
+TEST(Node, ABadLayoutNameIsAnOptionError) {
+  ProcessOptions options;
+  options.lcm_url = "udpm://239.255.76.67:7667?ttl=0";
+  options.bus_layout = "both";
+  EXPECT_THROW(Node("test", options), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace sdlqr::bus

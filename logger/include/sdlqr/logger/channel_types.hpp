@@ -22,6 +22,7 @@ enum class MessageType {
   kCommand,
   kHeartbeat,
   kSimTruth,
+  kSimClock,
 };
 
 struct ChannelType {

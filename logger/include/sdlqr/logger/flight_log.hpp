@@ -28,6 +28,14 @@
 
 namespace sdlqr::logger {
 
+// One SIM_CLOCK message (sim_clock_t): only the scenario player reads the clock, so it has no
+// struct in messages.hpp.
+struct SimClockTick {
+  int64_t utime = 0;      // [us] simulation time
+  int64_t seq = 0;        // [-]
+  int64_t period_us = 0;  // [us] between ticks
+};
+
 template <class T>
 struct Series {
   std::vector<T> messages;
@@ -70,6 +78,7 @@ struct FlightLog {
   Series<Command> command;                  // COMMAND
   Series<HeartbeatRecord> heartbeat;        // HEARTBEAT, all processes
   Series<SimTruth> sim_truth;               // SIM_TRUTH
+  Series<SimClockTick> sim_clock;           // SIM_CLOCK
 
   // Every channel in the log in order of first appearance. For the vehicle's channels the
   // decoded utime/seq are filled in; other channels carry event counts and receive times.

@@ -7,6 +7,12 @@
 // Optional seeded fault injection (drop, delay) on received messages, for tests: see
 // FaultInjection, enabled by the SDLQR_FAULTS environment variable or setFaultInjection().
 // Algorithm code never sees this header; mains hand plain structs (common/messages.hpp) on.
+// Bus layout (bus_layout.hpp): under the split layout a channel travels on the port the layout
+// gives it, so the Node opens one connection per URL it subscribes or publishes on, and polls
+// the ones it subscribes on together; a URL it only publishes on never opens a receive socket.
+// It publishes with LCM; on udpm:// it reads its sockets itself, in the calling thread
+// (src/udpm_inbox.hpp says why), every datagram ready at once; a subscription of queue
+// capacity N gets the first N of its channel's messages waiting, later ones are dropped (as LCM).
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -19,10 +25,14 @@
 #include <string_view>
 #include <vector>
 
+#include "sdlqr/bus/bus_layout.hpp"
 #include "sdlqr/messages/channels.hpp"
 #include "sdlqr/config/cli.hpp"
 
 namespace sdlqr::bus {
+
+class UdpmInbox;
+struct WireMessage;
 
 enum class ProcessState : int8_t { kStarting = 0, kRunning = 1, kDegraded = 2, kFailsafe = 3, kStopping = 4 };
 
@@ -71,11 +81,17 @@ class Node {
   Node& operator=(const Node&) = delete;
 
   std::string channel(std::string_view base) const { return channel::name(vehicle_, base); }
-  lcm::LCM& lcm() { return *lcm_; }
+  // The connection of the --lcm-url itself (the base port): under the split layout it carries
+  // only the low-rate channels; publishEncoded() routes any channel to its own URL.
+  lcm::LCM& lcm() { return *endpoints_.front()->lcm; }
+  BusLayout busLayout() const { return layout_; }
+  // Every URL this node receives on (one per port it subscribes on), in the order opened.
+  std::vector<std::string> receiveUrls() const;
 
   // Decodes each message of `base` as T and calls handler(msg). A message that fails to decode
   // is counted as rejected ("reject.decode") and never reaches the handler. Gaps in `seq` count
-  // as dropped. queue_capacity 1 keeps only the newest message for control channels. A handler
+  // as dropped. queue_capacity 1: while a message waits to be handled, newer ones are dropped
+  // (LCM's semantics), so a control loop never works through a backlog. A handler
   // that runs longer than a non-zero `budget` (wall time) counts as a deadline miss in HEARTBEAT.
   template <class T>
   void subscribe(std::string_view base, std::function<void(const T&)> handler, int queue_capacity = 1,
@@ -83,7 +99,7 @@ class Node {
 
   // Undecoded messages of every channel whose full name matches the LCM regex `pattern` (no
   // vehicle prefix is added): for recorders. Counted as received; `receive_utime` is LCM's
-  // wall-clock receive time [us].
+  // wall-clock receive time [us]. Listens on every URL of the layout, so it hears every channel.
   using RawHandler =
       std::function<void(const std::string& channel, const void* data, uint32_t size, int64_t receive_utime)>;
   void subscribeRaw(const std::string& pattern, RawHandler handler, int queue_capacity);
@@ -91,6 +107,9 @@ class Node {
   // Encodes and publishes on the vehicle-prefixed channel.
   template <class T>
   void publish(std::string_view base, const T& msg);
+  // Already encoded bytes on a full channel name (no prefix added), on that channel's URL: for
+  // tools that forward or forge messages. Counted as published; a failure counts an error.
+  void publishEncoded(const std::string& channel, const void* data, int size);
 
   // Replaces the fault injection read from SDLQR_FAULTS at construction (tests over memq://).
   void setFaultInjection(const FaultInjection& faults);
@@ -99,6 +118,12 @@ class Node {
   // Handles messages for up to timeout_ms and publishes HEARTBEAT when one is due.
   // Returns false once SIGINT or SIGTERM has been received.
   bool spin(int timeout_ms);
+  // Waits up to `timeout` (finer than spin's milliseconds) until a message is ready on any
+  // subscribed URL, handling nothing; true when one is. Without subscriptions it just sleeps.
+  bool waitReadable(std::chrono::steady_clock::duration timeout);
+  // Handles messages for up to timeout_ms even after a stop signal, publishing nothing: for a
+  // recorder taking in the last messages (its own STOPPING heartbeat) before it closes.
+  void drain(int timeout_ms);
   bool running() const;
   // For a main that ends itself (e.g. a duration elapsed): publishes a last STOPPING heartbeat.
   void shutdown();
@@ -161,6 +186,7 @@ class Node {
   struct RawSubscription {
     Node* node = nullptr;
     RawHandler handler;
+    std::string pattern;  // LCM regex, anchored
   };
   // C callback: LCM's C++ wrapper would build a std::string of the channel for every message.
   static void dispatch(const lcm_recv_buf_t* rbuf, const char* channel, void* sub);
@@ -170,17 +196,62 @@ class Node {
   void deliverDueMessages();
   int millisecondsToNextDue(int timeout_ms) const;
   void addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity);
-  void publishRaw(const std::string& channel, const void* data, int size);
-  // Full channel name of a base name, built once: publishing then never allocates.
-  const std::string& publishChannel(std::string_view base);
+  // Who gets the messages of a udpm endpoint: a typed subscription (exact channel) or a raw one.
+  struct Route {
+    std::string channel;  // typed: the full name
+    SubscriptionBase* typed = nullptr;
+    RawSubscription* raw = nullptr;
+    int capacity = 0;  // newest messages of a batch delivered; 0: all
+  };
+  // The routes a channel name goes to, found once per name.
+  struct ChannelRoutes {
+    std::string channel;
+    std::vector<int> routes;
+  };
+  // One connection per URL, receiving once something subscribed on it.
+  struct Endpoint {
+    Endpoint();
+    ~Endpoint();
+    std::string url;
+    std::unique_ptr<lcm::LCM> lcm;       // publishing; receiving too on other providers than udpm
+    std::unique_ptr<UdpmInbox> inbox;    // udpm receiving
+    std::vector<Route> routes;
+    std::vector<ChannelRoutes> routes_by_channel;
+    std::vector<ChannelRoutes> uncached;  // per message of a batch, once routes_by_channel is full
+    std::vector<int> delivered;          // per route, scratch of one batch
+    std::vector<WireMessage> batch;
+    bool receiving = false;
+  };
+  Endpoint& endpoint(const std::string& url);
+  Endpoint& endpointFor(std::string_view channel) { return endpoint(channelUrl(layout_, base_url_, channel)); }
+  void markReceiving(Endpoint& e);
+  void publishRaw(lcm::LCM& lcm, const std::string& channel, const void* data, int size);
+  // Full channel name of a base name and its connection, found once: publishing then never allocates.
+  struct PublishChannel {
+    std::string base;
+    std::string full;
+    lcm::LCM* lcm = nullptr;
+  };
+  const PublishChannel& publishChannel(std::string_view base);
+  // Polls every receiving connection for up to timeout_ms and handles what is ready on each
+  // ready one; returns the number of connections handled, or -1 on an error.
+  int handleReady(int timeout_ms);
+  bool drainInbox(Endpoint& e);
+  const ChannelRoutes* routesOf(Endpoint& e, std::string_view channel, size_t batch_index);
+  void addRoute(Endpoint& e, Route route);
+  void deliverTyped(SubscriptionBase& sub, const void* data, uint32_t size);
 
   std::string process_;
   std::string vehicle_;
-  std::unique_ptr<lcm::LCM> lcm_;
+  BusLayout layout_ = BusLayout::kSplit;
+  std::string base_url_;
+  std::vector<std::unique_ptr<Endpoint>> endpoints_;  // [0]: the base URL
   std::vector<std::unique_ptr<SubscriptionBase>> subscriptions_;
   std::vector<std::unique_ptr<RawSubscription>> raw_subscriptions_;
   std::vector<uint8_t> encode_buffer_;
-  std::vector<std::pair<std::string, std::string>> publish_channels_;  // base -> prefixed
+  std::vector<PublishChannel> publish_channels_;
+  std::vector<std::pair<std::string, lcm::LCM*>> encoded_channels_;  // publishEncoded's, found once
+  std::vector<Endpoint*> receiving_;  // the endpoints handleReady polls
   Counters counters_;
   Counters::Id reject_decode_;
   Counters::Id reject_size_;
@@ -195,6 +266,10 @@ class Node {
   std::vector<std::vector<uint8_t>> spare_buffers_;
   Counters::Id fault_dropped_ = -1;
   Counters::Id fault_delayed_ = -1;
+  Counters::Id bus_datagrams_ = -1;
+  Counters::Id bus_malformed_ = -1;
+  Counters::Id bus_over_capacity_ = -1;
+  Counters::Id bus_unrouted_ = -1;
   ProcessState state_ = ProcessState::kStarting;
   int64_t sim_utime_ = 0;
   int64_t received_ = 0;
@@ -228,7 +303,8 @@ void Node::publish(std::string_view base, const T& msg) {
     setLastError("encode failed on " + std::string(base));
     return;
   }
-  publishRaw(publishChannel(base), encode_buffer_.data(), size);
+  const PublishChannel& target = publishChannel(base);
+  publishRaw(*target.lcm, target.full, encode_buffer_.data(), size);
 }
 
 }  // namespace sdlqr::bus

@@ -51,8 +51,11 @@ struct ProcessOptions {
   std::string config_path;  // vehicle YAML
   std::string lcm_url;      // empty: $LCM_DEFAULT_URL or LCM's default
   std::string vehicle;      // channel prefix
+  std::string bus_layout = "split";  // "single" or "split" (sdlqr/bus/bus_layout.hpp)
 };
 void addProcessOptions(ArgParser& parser, ProcessOptions* options);
+// --bus-layout alone, for the tools that take --lcm-url without the rest of addProcessOptions.
+void addBusLayoutOption(ArgParser& parser, ProcessOptions* options);
 
 // Runs `body`, turning a ConfigError or std::invalid_argument into a one-line message and exit
 // code 2, any other exception into a one-line message and exit code 1.
