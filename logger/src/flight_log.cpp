@@ -13,17 +13,11 @@ namespace sdlqr::logger {
 
 namespace {
 
-template <class LcmType>
-auto toPlain(const LcmType& m) {
-  return bus::fromLcm(m);
-}
-HeartbeatRecord toPlain(const heartbeat_t& m) { return toHeartbeatRecord(m); }
-
 template <class LcmType, class Plain>
 bool decodeAs(const LogEvent& event, Plain* out) {
-  LcmType message;
+  LcmType message{};
   if (!detail::decodeEvent(event, &message)) return false;
-  *out = toPlain(message);
+  *out = bus::fromLcm(message);
   return true;
 }
 
