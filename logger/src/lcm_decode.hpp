@@ -1,7 +1,7 @@
 #pragma once
 // Internal: decoding one log event into an lcm-gen class. A message is accepted only when its
-// bytes hold a complete encoding (checked first without allocating: see wire_check.hpp), it
-// decodes, and it consumes exactly its bytes.
+// bytes hold a complete encoding (checked first without allocating: see
+// sdlqr/lcmtypes/wire_cursor.hpp), it decodes, and it consumes exactly its bytes.
 
 #include <exception>
 
