@@ -13,18 +13,11 @@ namespace sdlqr::logger {
 
 namespace {
 
-template <class LcmType>
-auto toPlain(const LcmType& m) {
-  return bus::fromLcm(m);
-}
-HeartbeatRecord toPlain(const heartbeat_t& m) { return toHeartbeatRecord(m); }
-SimClockTick toPlain(const sim_clock_t& m) { return {m.utime, m.seq, m.period_us}; }
-
 template <class LcmType, class Plain>
 bool decodeAs(const LogEvent& event, Plain* out) {
-  LcmType message;
+  LcmType message{};
   if (!detail::decodeEvent(event, &message)) return false;
-  *out = toPlain(message);
+  *out = bus::fromLcm(message);
   return true;
 }
 
@@ -75,6 +68,7 @@ bool decodeMessage(const LogEvent& e, ParamsUpdate* out) { return decodeAs<param
 bool decodeMessage(const LogEvent& e, Command* out) { return decodeAs<command_t>(e, out); }
 bool decodeMessage(const LogEvent& e, HeartbeatRecord* out) { return decodeAs<heartbeat_t>(e, out); }
 bool decodeMessage(const LogEvent& e, SimTruth* out) { return decodeAs<sim_truth_t>(e, out); }
+bool decodeMessage(const LogEvent& e, SimClockTick* out) { return decodeAs<sim_clock_t>(e, out); }
 
 FlightLog FlightLog::load(const std::string& path, const std::string& vehicle) {
   FlightLog log;

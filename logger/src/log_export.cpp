@@ -9,8 +9,8 @@
 
 #include "lcm_decode.hpp"
 #include "sdlqr/logger/channel_types.hpp"
-#include "sdlqr/logger/csv.hpp"
-#include "sdlqr/logger/generated/lcm_csv_rows.hpp"
+#include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
+#include "sdlqr/logger/csv_row.hpp"
 #include "sdlqr/logger/log_naming.hpp"
 #include "sdlqr/logger/log_reader.hpp"
 #include "sdlqr/bus/convert.hpp"
@@ -32,7 +32,7 @@ void collect(const rate_cmd_t& m, const std::string& channel, int64_t, MetricsIn
 }
 void collect(const heartbeat_t& m, const std::string& channel, int64_t receive_utime, MetricsInput& input) {
   HeartbeatSeries& series = input.heartbeats[channel];
-  series.records.push_back(toHeartbeatRecord(m));
+  series.records.push_back(bus::fromLcm(m));
   series.receive_utime.push_back(receive_utime);
 }
 
@@ -47,8 +47,9 @@ class ChannelSink {
 template <class LcmType>
 class CsvSink : public ChannelSink {
  public:
-  CsvSink(const fs::path& path, const TypeDescriptor& type) : path_(path), file_(path, std::ios::binary | std::ios::trunc), writer_(file_) {
+  explicit CsvSink(const fs::path& path) : path_(path), file_(path, std::ios::binary | std::ios::trunc), writer_(file_) {
     if (!file_) throw std::runtime_error("cannot write '" + path.string() + "'");
+    const lcmtypes::TypeDescriptor& type = lcmtypes::LcmFields<LcmType>::type;
     for (std::size_t i = 0; i < type.num_columns; ++i) writer_.name(type.columns[i]);
     writer_.endRow();
   }
@@ -58,10 +59,8 @@ class CsvSink : public ChannelSink {
       ++timeline.decode_failures;
       return;
     }
-    generated::writeCsvRow(writer_, message_);
-    int64_t utime = 0;
-    int64_t seq = 0;
-    if (generated::utimeAndSeq(message_, &utime, &seq)) timeline.addDecoded(event.receive_utime, utime, seq);
+    writeCsvRow(writer_, message_);
+    timeline.addDecoded(event.receive_utime, message_.utime, message_.seq);
     collect(message_, timeline.channel, event.receive_utime, input);
   }
 
@@ -87,9 +86,9 @@ struct ChannelState {
 
 std::unique_ptr<ChannelSink> makeSink(std::string_view lcm_type, const fs::path& path) {
   std::unique_ptr<ChannelSink> sink;
-  generated::visitLcmType(lcm_type, [&](auto tag, const TypeDescriptor& descriptor) {
+  lcmtypes::visitLcmType(lcm_type, [&](auto tag) {
     using LcmType = typename decltype(tag)::type;
-    sink = std::make_unique<CsvSink<LcmType>>(path, descriptor);
+    sink = std::make_unique<CsvSink<LcmType>>(path);
   });
   return sink;
 }

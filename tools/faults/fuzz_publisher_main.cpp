@@ -12,7 +12,7 @@
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/faults/fuzz_messages.hpp"
 #include "sdlqr/logger/channel_types.hpp"
-#include "sdlqr/logger/generated/lcm_csv_rows.hpp"
+#include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
 #include "sdlqr/bus/node.hpp"
 
 using namespace sdlqr;
@@ -21,7 +21,7 @@ namespace {
 
 struct Target {
   std::string channel;
-  const logger::TypeDescriptor* type = nullptr;
+  const lcmtypes::TypeDescriptor* type = nullptr;
   std::vector<uint8_t> latest;  // newest valid encoding heard (or a default one)
   std::vector<uint8_t> old;     // one heard at least replay_age ago
   double old_taken_s = -1.0;
@@ -29,7 +29,7 @@ struct Target {
 
 std::vector<uint8_t> defaultEncoding(std::string_view lcm_type) {
   std::vector<uint8_t> bytes;
-  logger::generated::visitLcmType(lcm_type, [&](auto tag, const logger::TypeDescriptor&) {
+  lcmtypes::visitLcmType(lcm_type, [&](auto tag) {
     typename decltype(tag)::type message{};
     bytes.resize(static_cast<size_t>(message.getEncodedSize()));
     message.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
       if (("," + skip_text + ",").find("," + std::string(channel.base) + ",") != std::string::npos) continue;
       Target target;
       target.channel = bus.channel(channel.base);
-      target.type = logger::generated::findType(channel.lcm_type);
+      target.type = lcmtypes::findType(channel.lcm_type);
       target.latest = defaultEncoding(channel.lcm_type);
       if (target.type == nullptr || target.latest.empty()) continue;
       targets.push_back(std::move(target));

@@ -11,7 +11,7 @@
 
 #include "message_types.hpp"
 #include "sdlqr/health/validate.hpp"
-#include "sdlqr/logger/generated/lcm_csv_rows.hpp"
+#include "sdlqr/lcmtypes/generated/wire_fits.hpp"
 
 namespace {
 
@@ -32,7 +32,7 @@ void closedLoopIfGains(const Plain&) {}
 
 template <class Lcm>
 void receive(const uint8_t* data, int64_t size) {
-  if (!logger::generated::encodingFits(static_cast<const Lcm*>(nullptr), data, size)) return;  // reject.size
+  if (!lcmtypes::encodingFits(static_cast<const Lcm*>(nullptr), data, size)) return;  // reject.size
   Lcm message;
   if (message.decode(data, 0, static_cast<int>(size)) < 0) return;  // reject.decode
   const auto plain = bus::fromLcm(message);
@@ -40,8 +40,8 @@ void receive(const uint8_t* data, int64_t size) {
 
   std::vector<uint8_t> encoded(static_cast<size_t>(message.getEncodedSize()));
   if (message.encode(encoded.data(), 0, static_cast<int>(encoded.size())) < 0) std::abort();
-  if (!logger::generated::encodingFits(static_cast<const Lcm*>(nullptr), encoded.data(),
-                                       static_cast<int64_t>(encoded.size()))) {
+  if (!lcmtypes::encodingFits(static_cast<const Lcm*>(nullptr), encoded.data(),
+                              static_cast<int64_t>(encoded.size()))) {
     std::abort();  // the walk would drop a valid message
   }
 }

@@ -12,9 +12,8 @@
 #include "sdlqr/messages/channels.hpp"
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/inspect/bus_monitor.hpp"
-#include "sdlqr/logger/heartbeat_from_lcm.hpp"
+#include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
-#include "sdlqr/heartbeat_t.hpp"
 
 namespace {
 
@@ -96,7 +95,7 @@ int main(int argc, char** argv) {
       if (!isHeartbeat(channel)) return;
       heartbeat_t heartbeat;
       if (heartbeat.decode(data, 0, static_cast<int>(size)) < 0) return;
-      monitor.onHeartbeat(channel, logger::toHeartbeatRecord(heartbeat), receive_utime);
+      monitor.onHeartbeat(channel, bus::fromLcm(heartbeat), receive_utime);
     }, 4096);
     bus.setState(bus::ProcessState::kRunning);
 

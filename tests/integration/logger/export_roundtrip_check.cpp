@@ -22,7 +22,9 @@
 
 #include "sdlqr/logger/channel_types.hpp"
 #include "sdlqr/logger/csv.hpp"
-#include "sdlqr/logger/generated/lcm_csv_rows.hpp"
+#include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
+#include "sdlqr/lcmtypes/generated/wire_fits.hpp"
+#include "sdlqr/logger/csv_row.hpp"
 #include "sdlqr/logger/log_reader.hpp"
 
 namespace {
@@ -83,12 +85,12 @@ int checkExport(const std::string& log_path, const fs::path& csv_dir) {
       continue;
     }
     int64_t channel_failures = 0;
-    generated::visitLcmType(type->lcm_type, [&](auto tag, const TypeDescriptor&) {
+    sdlqr::lcmtypes::visitLcmType(type->lcm_type, [&](auto tag) {
       using LcmType = typename decltype(tag)::type;
       for (size_t i = 0; i < messages.size(); ++i) {
         LcmType back;
         std::string row_error;
-        if (!generated::readCsvRow(rows[i + 1], back, &row_error) || encode(back) != messages[i]->bytes) {
+        if (!readCsvRow(rows[i + 1], back, &row_error) || encode(back) != messages[i]->bytes) {
           if (channel_failures++ == 0) {
             std::cout << "FAIL " << channel << " row " << i + 1 << " does not re-encode to the recorded bytes "
                       << row_error << "\n";

@@ -12,7 +12,9 @@
 #include "sdlqr/logger/csv.hpp"
 #include "sdlqr/logger/decode.hpp"
 #include "sdlqr/logger/flight_log.hpp"
-#include "sdlqr/logger/generated/lcm_csv_rows.hpp"
+#include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
+#include "sdlqr/lcmtypes/generated/wire_fits.hpp"
+#include "sdlqr/logger/csv_row.hpp"
 #include "sdlqr/logger/log_export.hpp"
 #include "sdlqr/logger/log_reader.hpp"
 #include "sdlqr/bus/convert.hpp"
@@ -54,11 +56,12 @@ TEST(Export, EveryTypeRoundTripsExactly) {
   int64_t receive = kStart;
   for (int round = 0; round < 40; ++round) {
     for (const ChannelType& c : channelTypes()) {
-      const bool known = generated::visitLcmType(c.lcm_type, [&](auto tag, const TypeDescriptor& descriptor) {
+      const bool known = lcmtypes::visitLcmType(c.lcm_type, [&](auto tag) {
         using LcmType = typename decltype(tag)::type;
+        const lcmtypes::TypeDescriptor& descriptor = lcmtypes::LcmFields<LcmType>::type;
         LcmType message;
         std::string error;
-        ASSERT_TRUE(generated::readCsvRow(random.make(descriptor), message, &error)) << c.lcm_type << ": " << error;
+        ASSERT_TRUE(readCsvRow(random.make(descriptor), message, &error)) << c.lcm_type << ": " << error;
         const std::string channel = channel::name(round % 4 == 0 ? "" : "QUAD1", c.base);
         events.push_back({channel, encode(message), receive += 137});
         expected[channel].push_back(events.back().bytes);
@@ -87,13 +90,14 @@ TEST(Export, EveryTypeRoundTripsExactly) {
     EXPECT_EQ(exported->decode_failures, 0);
     const std::vector<std::vector<std::string>> rows = readCsv(exported->csv_path);
     ASSERT_EQ(rows.size(), messages.size() + 1) << channel << ": header plus one row per message";
-    generated::visitLcmType(exported->lcm_type, [&](auto tag, const TypeDescriptor& descriptor) {
+    lcmtypes::visitLcmType(exported->lcm_type, [&](auto tag) {
       using LcmType = typename decltype(tag)::type;
+      const lcmtypes::TypeDescriptor& descriptor = lcmtypes::LcmFields<LcmType>::type;
       EXPECT_EQ(rows[0], std::vector<std::string>(descriptor.columns, descriptor.columns + descriptor.num_columns));
       for (size_t i = 0; i < messages.size(); ++i) {
         LcmType back;
         std::string error;
-        ASSERT_TRUE(generated::readCsvRow(rows[i + 1], back, &error)) << channel << " row " << i << ": " << error;
+        ASSERT_TRUE(readCsvRow(rows[i + 1], back, &error)) << channel << " row " << i << ": " << error;
         // Same encoding = every field, every array element, every string byte identical.
         ASSERT_EQ(encode(back), messages[i]) << channel << " row " << i;
         values_compared += rows[i + 1].size();

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "sdlqr/logger/channel_types.hpp"
-#include "sdlqr/logger/generated/lcm_type_descriptors.hpp"
+#include "sdlqr/lcmtypes/generated/descriptors.hpp"
 #include "sdlqr/logger/log_naming.hpp"
 
 namespace sdlqr::logger {
@@ -38,8 +38,8 @@ TEST(LogNaming, ChannelCsvPathsStayInsideTheExportFolder) {
 }
 
 TEST(ChannelTypes, EveryGeneratedTypeHasExactlyOneChannel) {
-  EXPECT_EQ(channelTypes().size(), std::size(generated::kAllTypes));
-  for (const TypeDescriptor* type : generated::kAllTypes) {
+  EXPECT_EQ(channelTypes().size(), std::size(lcmtypes::kAllTypes));
+  for (const lcmtypes::TypeDescriptor* type : lcmtypes::kAllTypes) {
     int channels = 0;
     for (const ChannelType& c : channelTypes()) channels += c.lcm_type == type->name ? 1 : 0;
     EXPECT_EQ(channels, 1) << type->name;

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "sdlqr/logger/field_descriptor.hpp"
+#include "sdlqr/lcmtypes/field_descriptor.hpp"
 
 namespace sdlqr::logger::test {
 
@@ -80,7 +80,7 @@ class RandomCells {
  public:
   explicit RandomCells(uint64_t seed) : rng_(seed) {}
 
-  std::vector<std::string> make(const TypeDescriptor& type) {
+  std::vector<std::string> make(const lcmtypes::TypeDescriptor& type) {
     std::set<std::string_view> length_fields;
     for (size_t f = 0; f < type.num_fields; ++f) {
       for (int d = 0; d < type.fields[f].num_dimensions; ++d) {
@@ -90,7 +90,7 @@ class RandomCells {
     std::map<std::string_view, int64_t> lengths;
     std::vector<std::string> cells;
     for (size_t f = 0; f < type.num_fields; ++f) {
-      const FieldDescriptor& field = type.fields[f];
+      const lcmtypes::FieldDescriptor& field = type.fields[f];
       bool variable = false;
       int fixed = 1;
       for (int d = 0; d < field.num_dimensions; ++d) {
@@ -162,9 +162,9 @@ class RandomCells {
     return out + "\"";
   }
 
-  std::string jsonArray(const FieldDescriptor& field, int depth, const std::map<std::string_view, int64_t>& lengths) {
+  std::string jsonArray(const lcmtypes::FieldDescriptor& field, int depth, const std::map<std::string_view, int64_t>& lengths) {
     if (depth < 0 || depth >= static_cast<int>(std::size(field.dimensions))) throw std::logic_error("bad depth");
-    const ArrayDimension& d = field.dimensions[depth];
+    const lcmtypes::ArrayDimension& d = field.dimensions[depth];
     const int64_t n = d.length_field.empty() ? d.size : lengths.at(d.length_field);
     std::string out = "[";
     for (int64_t i = 0; i < n; ++i) {

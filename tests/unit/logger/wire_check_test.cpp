@@ -8,7 +8,9 @@
 
 #include "sdlqr/logger/channel_types.hpp"
 #include "sdlqr/logger/decode.hpp"
-#include "sdlqr/logger/generated/lcm_csv_rows.hpp"
+#include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
+#include "sdlqr/lcmtypes/generated/wire_fits.hpp"
+#include "sdlqr/logger/csv_row.hpp"
 #include "test_support.hpp"
 
 namespace sdlqr::logger {
@@ -80,24 +82,25 @@ TEST(WireCheck, AgreesWithTheLcmDecoderUnderCorruption) {
   int64_t fitted = 0;
   int64_t rejected = 0;
   for (const ChannelType& channel : channelTypes()) {
-    generated::visitLcmType(channel.lcm_type, [&](auto tag, const TypeDescriptor& descriptor) {
+    lcmtypes::visitLcmType(channel.lcm_type, [&](auto tag) {
       using LcmType = typename decltype(tag)::type;
+      const lcmtypes::TypeDescriptor& descriptor = lcmtypes::LcmFields<LcmType>::type;
       const LcmType* type = nullptr;
       for (int round = 0; round < 200; ++round) {
         LcmType message;
         std::string error;
-        ASSERT_TRUE(generated::readCsvRow(random.make(descriptor), message, &error)) << error;
+        ASSERT_TRUE(readCsvRow(random.make(descriptor), message, &error)) << error;
         std::vector<uint8_t> bytes = encode(message);
-        ASSERT_TRUE(generated::encodingFits(type, bytes.data(), static_cast<int64_t>(bytes.size()))) << channel.lcm_type;
+        ASSERT_TRUE(lcmtypes::encodingFits(type, bytes.data(), static_cast<int64_t>(bytes.size()))) << channel.lcm_type;
         const int64_t cut = static_cast<int64_t>(rng() % bytes.size());
-        EXPECT_FALSE(generated::encodingFits(type, bytes.data(), cut)) << channel.lcm_type << " cut to " << cut;
+        EXPECT_FALSE(lcmtypes::encodingFits(type, bytes.data(), cut)) << channel.lcm_type << " cut to " << cut;
         std::vector<uint8_t> longer = bytes;
         longer.push_back(0);
-        EXPECT_FALSE(generated::encodingFits(type, longer.data(), static_cast<int64_t>(longer.size())));
+        EXPECT_FALSE(lcmtypes::encodingFits(type, longer.data(), static_cast<int64_t>(longer.size())));
         for (int flip = 0; flip < 3; ++flip) {
           bytes[8 + rng() % (bytes.size() - 8)] = static_cast<uint8_t>(rng());
         }
-        if (generated::encodingFits(type, bytes.data(), static_cast<int64_t>(bytes.size()))) {
+        if (lcmtypes::encodingFits(type, bytes.data(), static_cast<int64_t>(bytes.size()))) {
           ++fitted;
           LcmType back;
           EXPECT_EQ(back.decode(bytes.data(), 0, static_cast<int>(bytes.size())), static_cast<int>(bytes.size()))

@@ -45,17 +45,17 @@ const char* toString(FuzzKind kind) {
   return "unknown";
 }
 
-std::vector<int64_t> doubleOffsets(const logger::TypeDescriptor& type, const uint8_t* data, int64_t size) {
+std::vector<int64_t> doubleOffsets(const lcmtypes::TypeDescriptor& type, const uint8_t* data, int64_t size) {
   std::vector<int64_t> offsets;
   std::vector<std::pair<std::string_view, int64_t>> integers;  // scalar integer fields: array lengths
   int64_t pos = 8;
   for (std::size_t f = 0; f < type.num_fields; ++f) {
-    const logger::FieldDescriptor& field = type.fields[f];
+    const lcmtypes::FieldDescriptor& field = type.fields[f];
     const int element = primitiveSize(field.type);
     if (element == 0) return {};
     int64_t count = 1;
     for (int d = 0; d < field.num_dimensions; ++d) {
-      const logger::ArrayDimension& dim = field.dimensions[d];
+      const lcmtypes::ArrayDimension& dim = field.dimensions[d];
       int64_t length = dim.size;
       if (length == 0) {
         length = -1;
@@ -79,7 +79,7 @@ std::vector<int64_t> doubleOffsets(const logger::TypeDescriptor& type, const uin
   return offsets;
 }
 
-bool FuzzGenerator::make(FuzzKind kind, const logger::TypeDescriptor& type, const std::vector<uint8_t>& valid,
+bool FuzzGenerator::make(FuzzKind kind, const lcmtypes::TypeDescriptor& type, const std::vector<uint8_t>& valid,
                          std::vector<uint8_t>& out) {
   const int64_t size = static_cast<int64_t>(valid.size());
   switch (kind) {

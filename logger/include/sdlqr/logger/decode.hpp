@@ -32,5 +32,6 @@ bool decodeMessage(const LogEvent& event, ParamsUpdate* out);
 bool decodeMessage(const LogEvent& event, Command* out);
 bool decodeMessage(const LogEvent& event, HeartbeatRecord* out);
 bool decodeMessage(const LogEvent& event, SimTruth* out);
+bool decodeMessage(const LogEvent& event, SimClockTick* out);
 
 }  // namespace sdlqr::logger

@@ -28,14 +28,6 @@
 
 namespace sdlqr::logger {
 
-// One SIM_CLOCK message (sim_clock_t): only the scenario player reads the clock, so it has no
-// struct in messages.hpp.
-struct SimClockTick {
-  int64_t utime = 0;      // [us] simulation time
-  int64_t seq = 0;        // [-]
-  int64_t period_us = 0;  // [us] between ticks
-};
-
 template <class T>
 struct Series {
   std::vector<T> messages;

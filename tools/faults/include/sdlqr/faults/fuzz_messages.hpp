@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "sdlqr/logger/field_descriptor.hpp"
+#include "sdlqr/lcmtypes/field_descriptor.hpp"
 
 namespace sdlqr::faults {
 
@@ -25,7 +25,7 @@ const char* toString(FuzzKind kind);
 
 // Byte offsets of every double (scalar or array element) in a valid encoding of `type`, walking
 // the descriptor's fields after the 8-byte fingerprint. Empty when the walk does not fit `size`.
-std::vector<int64_t> doubleOffsets(const logger::TypeDescriptor& type, const uint8_t* data, int64_t size);
+std::vector<int64_t> doubleOffsets(const lcmtypes::TypeDescriptor& type, const uint8_t* data, int64_t size);
 
 class FuzzGenerator {
  public:
@@ -33,7 +33,7 @@ class FuzzGenerator {
   // Writes into `out` the variant `kind` of `valid` (an encoding of `type`; for kReplayed pass
   // the old encoding as `valid`). Returns false when the kind cannot be made from it (no double
   // field for kNonFinite/kHuge): nothing to send.
-  bool make(FuzzKind kind, const logger::TypeDescriptor& type, const std::vector<uint8_t>& valid,
+  bool make(FuzzKind kind, const lcmtypes::TypeDescriptor& type, const std::vector<uint8_t>& valid,
             std::vector<uint8_t>& out);
 
  private:

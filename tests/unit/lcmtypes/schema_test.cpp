@@ -4,18 +4,29 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <regex>
+#include <sstream>
 
-#include "sdlqr/logger/generated/lcm_type_descriptors.hpp"
-#include "sdlqr/logger/lcm_schema.hpp"
-#include "test_support.hpp"
+#include "sdlqr/lcmgen/schema.hpp"
+#include "schema_error.hpp"
+#include "sdlqr/lcmtypes/generated/descriptors.hpp"
 
-namespace sdlqr::logger {
+namespace sdlqr::lcmgen {
 namespace {
 
 namespace fs = std::filesystem;
-using generated::findType;
-using generated::kAllTypes;
+using lcmtypes::FieldDescriptor;
+using lcmtypes::findType;
+using lcmtypes::kAllTypes;
+using lcmtypes::TypeDescriptor;
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 fs::path lcmDir() { return fs::path(SDLQR_SOURCE_DIR) / "lcmtypes"; }
 
@@ -63,7 +74,7 @@ TEST(LcmSchema, EveryLcmFileIsDescribedFieldForField) {
     const std::string type_name = entry.path().stem().string();
     const TypeDescriptor* type = findType(type_name);
     ASSERT_NE(type, nullptr) << type_name << " has no generated descriptor";
-    std::istringstream text(test::readText(entry.path()));
+    std::istringstream text(readText(entry.path()));
     std::string line;
     size_t index = 0;
     size_t scalar_columns = 0;
@@ -122,14 +133,34 @@ TEST(LcmSchema, ParsesConstantsMultiNamesAndTwoDimensions) {
   EXPECT_EQ(columns, expected);
 }
 
+TEST(LcmSchema, ReadsAnnotationsAndConstantsFromComments) {
+  const LcmStruct s = parseLcmStruct(
+      "package demo;\n"
+      "// A demo message.\n"
+      "// @plain Demo @method int twice() const\n"
+      "struct demo_t {\n"
+      "  int64_t utime; // [us] time @default -1\n"
+      "  int8_t mode;   // [-] one of MODE_* @enum DemoMode MODE_ @default MODE_B\n"
+      "  const int8_t MODE_A = 0, MODE_B = 1; // the modes\n"
+      "}\n",
+      "demo_t.lcm");
+  EXPECT_EQ(s.comment, "A demo message.");
+  EXPECT_EQ(s.annotations.find("plain")->second, "Demo");
+  EXPECT_EQ(s.annotations.find("method")->second, "int twice() const");
+  ASSERT_EQ(s.fields.size(), 2u);
+  EXPECT_EQ(s.fields[0].comment, "[us] time");  // the unit comment without the annotations
+  EXPECT_EQ(s.fields[0].annotation("default"), "-1");
+  EXPECT_EQ(s.fields[1].annotation("enum"), "DemoMode MODE_");
+  EXPECT_EQ(s.fields[1].annotation("default"), "MODE_B");
+  EXPECT_FALSE(s.fields[1].has("as"));
+  ASSERT_EQ(s.constants.size(), 2u);
+  EXPECT_EQ(s.constants[1].name, "MODE_B");
+  EXPECT_EQ(s.constants[1].value, "1");
+  EXPECT_EQ(s.constants[1].comment, "the modes");
+}
+
 void expectSchemaError(const std::string& text, const std::string& fragment) {
-  try {
-    parseLcmStruct(text, "bad.lcm");
-    ADD_FAILURE() << "no error for: " << text;
-  } catch (const LcmSchemaError& e) {
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).rfind("bad.lcm:", 0), 0u) << e.what();
-  }
+  test::expectSchemaError([&] { parseLcmStruct(text, "bad.lcm"); }, fragment, text);
 }
 
 TEST(LcmSchema, RejectsWhatTheExportCannotDescribe) {
@@ -145,4 +176,4 @@ TEST(LcmSchema, RejectsWhatTheExportCannotDescribe) {
 }
 
 }  // namespace
-}  // namespace sdlqr::logger
+}  // namespace sdlqr::lcmgen

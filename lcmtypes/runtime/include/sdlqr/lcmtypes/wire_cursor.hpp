@@ -1,13 +1,13 @@
 #pragma once
-// Bounds walking of an LCM encoding, used by the generated encodingFits() functions before
-// a log event is handed to an lcm-gen decoder. lcm-gen decoders resize their vectors to the
-// array length in the message before checking that the bytes are there, so one corrupt length
-// field (2^31 samples in a 60-byte event) would allocate and zero gigabytes. The walk reads
-// only lengths and never allocates.
+// Bounds walking of an LCM encoding, used by the generated encodingFits() functions
+// (sdlqr/lcmtypes/generated/wire_fits.hpp) before bytes are handed to an lcm-gen decoder.
+// lcm-gen decoders resize their vectors to the array length in the message before checking
+// that the bytes are there, so one corrupt length field (2^31 samples in a 60-byte event)
+// would allocate and zero gigabytes. The walk reads only lengths and never allocates.
 
 #include <cstdint>
 
-namespace sdlqr::logger::wire {
+namespace sdlqr::lcmtypes::wire {
 
 struct Cursor {
   const uint8_t* data = nullptr;
@@ -45,4 +45,4 @@ inline bool elementCount(int64_t a, int64_t b, int64_t limit, int64_t* out) {
   return true;
 }
 
-}  // namespace sdlqr::logger::wire
+}  // namespace sdlqr::lcmtypes::wire

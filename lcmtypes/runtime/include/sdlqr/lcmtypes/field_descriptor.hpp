@@ -1,11 +1,11 @@
 #pragma once
-// What the generated descriptors (sdlqr/logger/generated/lcm_type_descriptors.hpp, built from
+// What the generated descriptors (sdlqr/lcmtypes/generated/descriptors.hpp, built from
 // lcmtypes/*.lcm) say about each message type: its fields, their units and its CSV columns.
 
 #include <cstddef>
 #include <string_view>
 
-namespace sdlqr::logger {
+namespace sdlqr::lcmtypes {
 
 struct ArrayDimension {
   int size = 0;                   // fixed length, 0 when variable
@@ -28,4 +28,4 @@ struct TypeDescriptor {
   std::size_t num_columns = 0;
 };
 
-}  // namespace sdlqr::logger
+}  // namespace sdlqr::lcmtypes
