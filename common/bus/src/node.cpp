@@ -14,7 +14,7 @@
 #include <stdexcept>
 
 #include "sdlqr/heartbeat_t.hpp"
-#include "sdlqr/bus/watchdog_report.hpp"
+#include "sdlqr/bus/wall_clock.hpp"
 
 namespace sdlqr::bus {
 
@@ -83,17 +83,10 @@ FaultInjection FaultInjection::parse(const std::string& spec) {
   return f;
 }
 
-Counters::Id Counters::add(const std::string& name) {
-  for (size_t i = 0; i < names_.size(); ++i) {
-    if (names_[i] == name) return static_cast<Id>(i);
-  }
-  names_.push_back(name);
-  values_.push_back(0);
-  return static_cast<Id>(names_.size() - 1);
-}
+Node::Node(std::string process, const ProcessOptions& options) : Node(std::move(process), options, own_health_) {}
 
-Node::Node(std::string process, const ProcessOptions& options)
-    : process_(std::move(process)), vehicle_(options.vehicle) {
+Node::Node(std::string process, const ProcessOptions& options, ProcessHealth& health)
+    : process_(std::move(process)), vehicle_(options.vehicle), health_(&health) {
   for (char c : vehicle_) {
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) {
       throw std::invalid_argument("--vehicle: use letters, digits, '_' or '-' only, got '" + vehicle_ + "'");
@@ -104,8 +97,6 @@ Node::Node(std::string process, const ProcessOptions& options)
     throw std::runtime_error("cannot open LCM bus '" + (options.lcm_url.empty() ? std::string("default") : options.lcm_url) +
                              "' (is multicast routed? see README, Troubleshooting)");
   }
-  reject_decode_ = counters_.add("reject.decode");
-  reject_size_ = counters_.add("reject.size");
   if (const char* spec = std::getenv("SDLQR_FAULTS"); spec != nullptr && spec[0] != '\0') {
     setFaultInjection(FaultInjection::parse(spec));
   }
@@ -136,8 +127,8 @@ void Node::setFaultInjection(const FaultInjection& faults) {
   // Each process draws its own sequence from the common seed.
   fault_rng_.seed(faults.seed ^ std::hash<std::string>{}(process_));
   if (faults.enabled() && fault_dropped_ < 0) {
-    fault_dropped_ = counters_.add("fault.dropped");
-    fault_delayed_ = counters_.add("fault.delayed");
+    fault_dropped_ = health_->counters().add("fault.dropped");
+    fault_delayed_ = health_->counters().add("fault.delayed");
   }
 }
 
@@ -145,7 +136,7 @@ void Node::injectFault(SubscriptionBase& sub, const void* data, uint32_t size) {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   if (faults_.drop > 0.0 && uniform(fault_rng_) < faults_.drop) {
     ++received_;
-    counters_.increment(fault_dropped_);
+    health_->counters().increment(fault_dropped_);
     return;
   }
   const double delay_ms = faults_.delay_min_ms + (faults_.delay_max_ms - faults_.delay_min_ms) * uniform(fault_rng_);
@@ -158,7 +149,7 @@ void Node::injectFault(SubscriptionBase& sub, const void* data, uint32_t size) {
     return;
   }
   sub.last_due = due;
-  counters_.increment(fault_delayed_);
+  health_->counters().increment(fault_delayed_);
   DelayedMessage message;
   message.sub = &sub;
   message.due = due;
@@ -236,7 +227,7 @@ void Node::addSubscription(const std::string& channel, std::unique_ptr<Subscript
 
 void Node::noteSequence(SubscriptionBase& sub, int64_t seq) {
   // A forward jump is a loss; a backward jump is a publisher restart and starts a new count.
-  if (sub.last_seq >= 0 && seq > sub.last_seq + 1) dropped_ += seq - sub.last_seq - 1;
+  if (sub.last_seq >= 0 && seq > sub.last_seq + 1) health_->countDropped(seq - sub.last_seq - 1);
   sub.last_seq = seq;
 }
 
@@ -264,7 +255,7 @@ bool Node::spin(int timeout_ms) {
 }
 
 void Node::shutdown() {
-  state_ = ProcessState::kStopping;
+  health_->setState(ProcessState::kStopping);
   publishHeartbeat();
 }
 
@@ -280,22 +271,22 @@ void Node::publishHeartbeat() {
   }
 
   heartbeat_t hb;
-  hb.utime = sim_utime_;
+  const ProcessHealth& health = *health_;
+  hb.utime = health.simTime();
   hb.seq = heartbeat_seq_++;
   hb.process = process_;
   hb.pid = static_cast<int32_t>(getpid());
-  hb.state = static_cast<int8_t>(running() ? state_ : ProcessState::kStopping);
+  hb.state = static_cast<int8_t>(running() ? health.state() : ProcessState::kStopping);
   hb.received = received_;
   hb.published = published_;
-  hb.dropped = dropped_;
-  hb.rejected = rejected_;
-  hb.deadline_misses = deadline_misses_;
-  hb.errors = errors_;
+  hb.dropped = health.dropped();
+  hb.rejected = health.rejected();
+  hb.deadline_misses = health.deadlineMisses();
+  hb.errors = health.errors();
   hb.cpu_percent = cpu_percent;
-  hb.num_counters = static_cast<int32_t>(counters_.names().size());
-  hb.counter_names = counters_.names();
-  hb.counter_values = counters_.values();
-  hb.last_error = last_error_;
+  health.exportCounters(hb.counter_names, hb.counter_values);
+  hb.num_counters = static_cast<int32_t>(hb.counter_names.size());
+  hb.last_error = health.lastError();
   publish(channel::kHeartbeat, hb);
 }
 

@@ -52,7 +52,7 @@ RecordedFlight loadRecordedFlight(const std::string& path, const std::string& ve
       case logger::MessageType::kParams: appendInput(event, InputKind::kParams, flight.params, flight, stats); break;
       case logger::MessageType::kRateCommand: append(event, flight.rate_command, stats); break;
       case logger::MessageType::kReference: append(event, flight.reference, stats); break;
-      case logger::MessageType::kGains: append(event, flight.gains, stats); break;
+      case logger::MessageType::kGains: appendInput(event, InputKind::kGains, flight.gains, flight, stats); break;
       default: break;
     }
   }

@@ -20,6 +20,8 @@ inline ReplayParams paramsOf(const closedloop::StackConfig& c) {
   p.lqr = c.lqr;
   p.controller = c.controller;
   p.gains = c.gains;
+  p.faults = c.faults;
+  p.limits = c.limits;
   return p;
 }
 

@@ -11,7 +11,9 @@
 
 namespace sdlqr::replay {
 
-enum class InputKind : uint8_t { kImu, kVioPose, kStateEstimate, kCommand, kTrajectory, kParams };
+// kStateEstimate and kGains mark where a recorded output was heard: a recomputed one takes its
+// place there, a foreign one (forged, replayed) is fed to the cores as it was on the bus.
+enum class InputKind : uint8_t { kImu, kVioPose, kStateEstimate, kCommand, kTrajectory, kParams, kGains };
 
 struct LogPosition {
   InputKind kind;
@@ -19,7 +21,7 @@ struct LogPosition {
 };
 
 struct RecordedFlight {
-  std::vector<LogPosition> order;  // every message below but the outputs other than STATE_EST, in log order
+  std::vector<LogPosition> order;  // every message below but RATE_CMD and REFERENCE, in log order
 
   std::vector<ImuSample> imu;
   std::vector<VioPose> vio_pose;
