@@ -55,6 +55,8 @@ void decode(MessageType type, const LogEvent& e, FlightLog& log, ChannelTimeline
     case MessageType::kCommand: decodeInto<command_t>(e, log.command, t); break;
     case MessageType::kHeartbeat: decodeInto<heartbeat_t>(e, log.heartbeat, t); break;
     case MessageType::kSimTruth: decodeInto<sim_truth_t>(e, log.sim_truth, t); break;
+    case MessageType::kOther:
+    case MessageType::kCount: break;
   }
 }
 

@@ -11,6 +11,8 @@
 //   future RATE_CMD       10 s ahead of the IMU clock             lead check       lowlevel
 //   NaN MOTOR_CMD         NaN thrust                              input checks     sim
 //   NaN REFERENCE         NaN thrust input                        validate         gains
+//   truncated GAINS       the newest GAINS' bytes less 8          size walk        controller
+//                         (bytes exist on the bus and in a log only, not in the in-process loop)
 
 #include <algorithm>
 #include <cstdint>
@@ -74,10 +76,14 @@ inline HostileInputs makeHostileInputs(const HeardMessages& heard) {
   return h;
 }
 
+enum class Path { kBus, kReplay, kClosedLoop };
+
 struct ExpectedRejection {
   std::string process;  // as in HEARTBEAT
   std::string counter;
   bool in_replay;       // the replay recomputes the estimator, the gain solver and the controller
+  bool in_closed_loop = true;
+  bool on(Path path) const { return path == Path::kBus || (path == Path::kReplay ? in_replay : in_closed_loop); }
 };
 
 // Each counted exactly once. REFERENCE is no replay input (the replay pairs recomputed ones).
@@ -87,6 +93,7 @@ inline const std::vector<ExpectedRejection>& expectedRejections() {
       {"sdlqr-controller", "reject.gains.unstable", true},
       {"sdlqr-controller", "reject.command.time_backwards", true},
       {"sdlqr-controller", "reject.params.nonfinite", true},
+      {"sdlqr-controller", "reject.gains.size", true, false},
       {"sdlqr-gains", "reject.state_est.time_future", true},
       {"sdlqr-gains", "reject.params.nonfinite", true},
       {"sdlqr-gains", "reject.reference.nonfinite", false},
@@ -103,10 +110,10 @@ inline const std::vector<ExpectedRejection>& expectedRejections() {
 // The rows of expectedRejections() a path did not count exactly once, as readable lines (empty:
 // every rejection as expected). counter(process, name) gives -1 for a process the path lacks.
 template <class CounterOf>
-std::vector<std::string> rejectionMismatches(CounterOf counter, bool replay_path) {
+std::vector<std::string> rejectionMismatches(CounterOf counter, Path path) {
   std::vector<std::string> mismatches;
   for (const ExpectedRejection& row : expectedRejections()) {
-    if (replay_path && !row.in_replay) continue;
+    if (!row.on(path)) continue;
     const int64_t value = counter(row.process, row.counter);
     if (value != 1) mismatches.push_back(row.process + " " + row.counter + " = " + std::to_string(value) + ", expected 1");
   }

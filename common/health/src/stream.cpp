@@ -1,5 +1,7 @@
 #include "sdlqr/health/stream.hpp"
 
+#include "sdlqr/messages/channels.hpp"
+
 namespace sdlqr {
 
 namespace {
@@ -10,22 +12,21 @@ struct StreamChannel {
   const char* name;
 };
 
-// The channel names of common/messages/channels.hpp (health sits below messages' channel list
-// in no way but this one table, so the bus and the cores agree on each stream's name).
+// Each stream's channel and its name in counters, so the bus and the cores agree on both.
 constexpr StreamChannel kStreams[] = {
-    {Stream::kImu, "IMU", "imu"},
-    {Stream::kVioPose, "VIO_POSE", "vio_pose"},
-    {Stream::kStateEstimate, "STATE_EST", "state_est"},
-    {Stream::kRateCommand, "RATE_CMD", "rate_cmd"},
-    {Stream::kMotorCommand, "MOTOR_CMD", "motor_cmd"},
-    {Stream::kGains, "GAINS", "gains"},
-    {Stream::kReference, "REFERENCE", "reference"},
-    {Stream::kTrajectory, "TRAJECTORY", "trajectory"},
-    {Stream::kDisturbance, "DISTURBANCE", "disturbance"},
-    {Stream::kParams, "PARAMS", "params"},
-    {Stream::kCommand, "COMMAND", "command"},
-    {Stream::kSimTruth, "SIM_TRUTH", "sim_truth"},
-    {Stream::kHeartbeat, "HEARTBEAT", "heartbeat"},
+    {Stream::kImu, channel::kImu, "imu"},
+    {Stream::kVioPose, channel::kVioPose, "vio_pose"},
+    {Stream::kStateEstimate, channel::kStateEstimate, "state_est"},
+    {Stream::kRateCommand, channel::kRateCommand, "rate_cmd"},
+    {Stream::kMotorCommand, channel::kMotorCommand, "motor_cmd"},
+    {Stream::kGains, channel::kGains, "gains"},
+    {Stream::kReference, channel::kReference, "reference"},
+    {Stream::kTrajectory, channel::kTrajectory, "trajectory"},
+    {Stream::kDisturbance, channel::kDisturbance, "disturbance"},
+    {Stream::kParams, channel::kParams, "params"},
+    {Stream::kCommand, channel::kCommand, "command"},
+    {Stream::kSimTruth, channel::kSimTruth, "sim_truth"},
+    {Stream::kHeartbeat, channel::kHeartbeat, "heartbeat"},
 };
 
 }  // namespace

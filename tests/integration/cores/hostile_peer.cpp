@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "hostile_inputs.hpp"
 #include "sdlqr/bus/convert.hpp"
@@ -24,7 +25,7 @@ namespace {
 
 using CounterTable = std::map<std::string, std::map<std::string, int64_t>>;  // process -> name -> value
 
-int report(const CounterTable& table, bool replay_path, const char* path_name) {
+int report(const CounterTable& table, testing::Path path, const char* path_name) {
   const auto mismatches = testing::rejectionMismatches(
       [&](const std::string& process, const std::string& counter) -> int64_t {
         const auto p = table.find(process);
@@ -32,9 +33,9 @@ int report(const CounterTable& table, bool replay_path, const char* path_name) {
         const auto c = p->second.find(counter);
         return c == p->second.end() ? 0 : c->second;
       },
-      replay_path);
+      path);
   for (const testing::ExpectedRejection& row : testing::expectedRejections()) {
-    if (replay_path && !row.in_replay) continue;
+    if (!row.on(path)) continue;
     const auto p = table.find(row.process);
     const int64_t value = p == table.end() ? -1 : (p->second.count(row.counter) ? p->second.at(row.counter) : 0);
     std::cout << path_name << ": " << row.process << " " << row.counter << " = " << value << "\n";
@@ -91,12 +92,16 @@ int attack(int argc, const char* const* argv) {
   node.publish(channel::kRateCommand, bus::toLcm(h.future_rate_command));
   node.publish(channel::kMotorCommand, bus::toLcm(h.nan_motor_command));
   node.publish(channel::kReference, bus::toLcm(h.nan_reference));
+  const gains_t truncated = bus::toLcm(heard.gains);
+  std::vector<uint8_t> bytes(static_cast<size_t>(truncated.getEncodedSize()));
+  truncated.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  node.lcm().publish(node.channel(channel::kGains), bytes.data(), static_cast<unsigned>(bytes.size() - 8));
   std::cout << "attack: published the hostile set at t=" << 1e-6 * static_cast<double>(heard.estimate.utime) << " s\n";
   table.clear();  // heartbeats from after the attack only
   const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(listen_s);
   while (node.spin(20) && std::chrono::steady_clock::now() < until) {
   }
-  return report(table, /*replay_path=*/false, "bus");
+  return report(table, testing::Path::kBus, "bus");
 }
 
 // Lines "rejections sdlqr-controller: reject.gains.unstable=1 reject...=1".
@@ -116,7 +121,7 @@ int checkReplay(const std::string& path) {
       counters[item.substr(0, eq)] = std::stoll(item.substr(eq + 1));
     }
   }
-  return report(table, /*replay_path=*/true, "replay");
+  return report(table, testing::Path::kReplay, "replay");
 }
 
 }  // namespace

@@ -15,6 +15,7 @@ int64_t RecordedFlight::utimeAt(const LogPosition& p) const {
     case InputKind::kTrajectory: return trajectory[i].utime;
     case InputKind::kParams: return params[i].utime;
     case InputKind::kGains: return gains[i].utime;
+    case InputKind::kUndecodable: return undecodable[i].utime;
   }
   return 0;
 }
@@ -62,6 +63,7 @@ void Recomputation::step() {
     case InputKind::kTrajectory: controller_.onTrajectory(flight_.trajectory[i]); break;
     case InputKind::kParams: onParams(flight_.params[i]); break;
     case InputKind::kGains: onRecordedGains(flight_.gains[i]); break;
+    case InputKind::kUndecodable: onUndecodable(flight_.undecodable[i]); break;
   }
   updateRejected();
 }
@@ -89,6 +91,8 @@ void Recomputation::updateRejected() {
 // sdlqr-estimator published it: it waits for the place of the recorded STATE_EST of its seq.
 void Recomputation::onEstimate(const StateEstimate& estimate) {
   outputs_.state_estimate.push_back(estimate);
+  last_recomputed_seq_ = estimate.seq;
+  last_recomputed_utime_ = estimate.utime;
   if (estimate.seq <= handed_over_up_to_) {
     ++pairing_.estimates_without_record;  // its place in the log has passed (or never was)
     handOver(estimate);
@@ -101,7 +105,7 @@ void Recomputation::onEstimate(const StateEstimate& estimate) {
 // replay did not compute (a forged, replayed or foreign estimate) reached them as it was.
 void Recomputation::onRecordedEstimate(const StateEstimate& recorded) {
   const auto ours = waiting_.find(recorded.seq);
-  if (ours == waiting_.end() || ours->second.utime != recorded.utime) {
+  if ((ours == waiting_.end() || ours->second.utime != recorded.utime) && !aheadOfItsImu(recorded)) {
     ++pairing_.foreign_estimates;
     gains_.onStateEstimate(recorded, outbox_);
     controller_.onStateEstimate(recorded, outbox_);
@@ -115,6 +119,15 @@ void Recomputation::onRecordedEstimate(const StateEstimate& recorded) {
   }
 }
 
+// On two cores the recorder may hear an estimate before the IMU sample that completed it (each
+// CPU delivers its own multicast backlog): the next seq or the one after, a little later than
+// the newest recomputed estimate, is that, and takes its place when it is recomputed.
+bool Recomputation::aheadOfItsImu(const StateEstimate& recorded) const {
+  constexpr int64_t kMaxAheadUs = 50'000;
+  return recorded.seq > last_recomputed_seq_ && recorded.seq <= last_recomputed_seq_ + 2 &&
+         recorded.utime > last_recomputed_utime_ && recorded.utime <= last_recomputed_utime_ + kMaxAheadUs;
+}
+
 // A recorded GAINS the replay did not solve (forged, or from another solver) reached the
 // controller on the bus: it is judged by the controller's core here too.
 void Recomputation::onRecordedGains(const GainSet& recorded) {
@@ -122,6 +135,17 @@ void Recomputation::onRecordedGains(const GainSet& recorded) {
   if (ours != replayed_gains_.end() && outputs_.gains[ours->second].utime == recorded.utime) return;
   ++pairing_.foreign_gains;
   controller_.onGains(recorded);
+}
+
+// Refused by the bus's decode step: counted by the cores subscribed to the channel, as on the bus.
+void Recomputation::onUndecodable(const UndecodableInput& input) {
+  const Stream stream = input.stream;
+  if (stream == Stream::kImu || stream == Stream::kVioPose) {
+    estimator_.health().reject(stream, input.reason);
+    return;
+  }
+  if (stream == Stream::kStateEstimate || stream == Stream::kParams) gains_.health().reject(stream, input.reason);
+  controller_.health().reject(stream, input.reason);  // STATE_EST, GAINS, COMMAND, TRAJECTORY, PARAMS
 }
 
 // The solver first: a solve at this estimate can only use references of earlier ticks (the
@@ -186,21 +210,21 @@ void Recomputation::controllerOnEstimate(const StateEstimate& estimate) {
   controller_.onStateEstimate(estimate, outbox_);
 }
 
-void Recomputation::Outputs::publish(const RateCommand& m) {
-  replay_.outputs_.rate_command.push_back(m);
-  const std::vector<RateCommand>& ticks = replay_.flight_.rate_command;
-  while (replay_.next_tick_ < ticks.size() && ticks[replay_.next_tick_].seq <= m.seq) ++replay_.next_tick_;
+void Recomputation::onOutput(const RateCommand& m) {
+  outputs_.rate_command.push_back(m);
+  const std::vector<RateCommand>& ticks = flight_.rate_command;
+  while (next_tick_ < ticks.size() && ticks[next_tick_].seq <= m.seq) ++next_tick_;
 }
 
-void Recomputation::Outputs::publish(const Reference& m) {
-  replay_.replayed_reference_[m.seq] = replay_.outputs_.reference.size();
-  replay_.outputs_.reference.push_back(m);
+void Recomputation::onOutput(const Reference& m) {
+  replayed_reference_[m.seq] = outputs_.reference.size();
+  outputs_.reference.push_back(m);
 }
 
 // solve_us is the solver's wall time, measured by the process: not recomputed.
-void Recomputation::Outputs::publish(const GainSet& m) {
-  replay_.replayed_gains_[m.seq] = replay_.outputs_.gains.size();
-  replay_.outputs_.gains.push_back(m);
+void Recomputation::onOutput(const GainSet& m) {
+  replayed_gains_[m.seq] = outputs_.gains.size();
+  outputs_.gains.push_back(m);
 }
 
 // The solver's STATE_EST, with the REFERENCE the recorded solve names.

@@ -57,7 +57,7 @@ std::vector<std::string> flyWithHostileInputs(const closedloop::StackConfig& con
         const ProcessHealth* health = healthOf(loop, process);
         return health ? health->counter(counter) : int64_t{-1};
       },
-      /*replay_path=*/false);
+      testing::Path::kClosedLoop);
 }
 
 TEST(HostileInputs, EachIsRejectedOnceInTheClosedLoop) {
@@ -70,7 +70,9 @@ TEST(HostileInputs, EachIsRejectedOnceInTheClosedLoop) {
 // Negative: the check fails on a flight without the hostile inputs (every row counted 0) ...
 TEST(HostileInputs, TheCheckFailsWithoutTheInputs) {
   const closedloop::StackConfig config = closedloop::StackConfig::load(SDLQR_SOURCE_DIR "/config/quad255.yaml");
-  EXPECT_EQ(flyWithHostileInputs(config, false).size(), testing::expectedRejections().size());
+  std::size_t rows = 0;
+  for (const testing::ExpectedRejection& row : testing::expectedRejections()) rows += row.on(testing::Path::kClosedLoop);
+  EXPECT_EQ(flyWithHostileInputs(config, false).size(), rows);
 }
 
 // ... and on the one row whose gate is disabled: a ClockGate that believes one message (no

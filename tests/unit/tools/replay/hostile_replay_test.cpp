@@ -43,6 +43,9 @@ RecordedFlight withHostileInputs(const RecordedFlight& clean) {
   insertAt(f, p, InputKind::kCommand, f.command, h.replayed_command);
   insertAt(f, p, InputKind::kGains, f.gains, h.destabilizing_gains);
   insertAt(f, p, InputKind::kStateEstimate, f.state_estimate, h.far_future_estimate);
+  // What the loader keeps of a GAINS the size walk refused (flight_loader.cpp).
+  insertAt(f, p, InputKind::kUndecodable, f.undecodable, UndecodableInput{heard.gains.utime, Stream::kGains,
+                                                                             RejectReason::kBadSize});
   return f;
 }
 
@@ -54,7 +57,7 @@ std::vector<std::string> mismatchesOf(const Recomputation& replay) {
         if (process == "sdlqr-estimator") return replay.estimator().health().counter(counter);
         return -1;
       },
-      /*replay_path=*/true);
+      testing::Path::kReplay);
 }
 
 const test::ClosedLoopFlight& cleanFlight() {
@@ -94,7 +97,7 @@ TEST(HostileReplay, TheCheckFailsWithoutTheInputsOrWithTheClockGateDisabled) {
   Recomputation clean(test::paramsOf(c.config), c.flight);
   clean.runToEnd();
   std::size_t replay_rows = 0;
-  for (const testing::ExpectedRejection& row : testing::expectedRejections()) replay_rows += row.in_replay;
+  for (const testing::ExpectedRejection& row : testing::expectedRejections()) replay_rows += row.on(testing::Path::kReplay);
   EXPECT_EQ(mismatchesOf(clean).size(), replay_rows);
 
   ReplayParams permissive = test::paramsOf(c.config);

@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "sdlqr/bus/convert.hpp"
+#include "sdlqr/bus/decode.hpp"
 #include "sdlqr/bus/node.hpp"
 #include "sdlqr/bus/wall_clock.hpp"
 #include "sdlqr/messages/outbox.hpp"
@@ -42,33 +43,18 @@ template <class Msg>
 constexpr std::string_view channelOf() {
   return channelOf(static_cast<const Msg*>(nullptr));
 }
-// The generated LCM type of a plain message type.
-template <class Msg>
-using LcmOf = decltype(toLcm(std::declval<const Msg&>()));
 
 // Publishes each message on the channel of its type.
-class NodeOutbox final : public Outbox {
- public:
-  explicit NodeOutbox(Node& node) : node_(node) {}
-  void publish(const ImuSample& m) override { send(m); }
-  void publish(const VioPose& m) override { send(m); }
-  void publish(const SimTruth& m) override { send(m); }
-  void publish(const StateEstimate& m) override { send(m); }
-  void publish(const GainSet& m) override { send(m); }
-  void publish(const RateCommand& m) override { send(m); }
-  void publish(const Reference& m) override { send(m); }
-  void publish(const MotorCommand& m) override { send(m); }
-  void publish(const Command& m) override { send(m); }
-  void publish(const Disturbance& m) override { send(m); }
-  void publish(const ParamsUpdate& m) override { send(m); }
-  void publish(const Trajectory& m) override { send(m); }
-
- private:
+struct PublishOnItsChannel {
+  Node* node;
   template <class Msg>
-  void send(const Msg& m) {
-    node_.publish(channelOf<Msg>(), toLcm(m));
+  void operator()(const Msg& m) const {
+    node->publish(channelOf<Msg>(), toLcm(m));
   }
-  Node& node_;
+};
+class NodeOutbox final : public OutboxTo<PublishOnItsChannel> {
+ public:
+  explicit NodeOutbox(Node& node) : OutboxTo<PublishOnItsChannel>(PublishOnItsChannel{&node}) {}
 };
 
 template <class Core>

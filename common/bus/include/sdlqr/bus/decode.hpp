@@ -5,7 +5,9 @@
 // then decode. A failure is a rejection like any other: kBadSize or kDecode.
 
 #include <cstdint>
+#include <utility>
 
+#include "sdlqr/bus/convert.hpp"
 #include "sdlqr/health/reject_reason.hpp"
 
 namespace sdlqr::bus {
@@ -22,5 +24,9 @@ RejectReason decode(const void* data, uint32_t size, T& out) {
   if (out.decode(data, 0, static_cast<int>(size)) < 0) return RejectReason::kDecode;
   return RejectReason::kNone;
 }
+
+// The generated LCM type of a plain message type.
+template <class Msg>
+using LcmOf = decltype(toLcm(std::declval<const Msg&>()));
 
 }  // namespace sdlqr::bus

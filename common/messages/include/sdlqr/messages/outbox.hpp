@@ -4,6 +4,8 @@
 // (common/bus core_binding.hpp); the in-process loop routes each message to the cores that
 // consume it; the replay keeps what it recomputes. Cores never see which.
 
+#include <utility>
+
 #include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr {
@@ -27,7 +29,7 @@ class Outbox {
 
 // An Outbox that hands every message to one generic callable, sink(const T&).
 template <class Sink>
-class OutboxTo final : public Outbox {
+class OutboxTo : public Outbox {
  public:
   explicit OutboxTo(Sink sink) : sink_(std::move(sink)) {}
   void publish(const ImuSample& m) override { sink_(m); }

@@ -94,32 +94,27 @@ class Recomputation {
   std::size_t inputsHandled() const { return next_; }
 
  private:
-  // What the cores publish, taken on by the replay.
-  class Outputs final : public Outbox {
-   public:
-    explicit Outputs(Recomputation& replay) : replay_(replay) {}
-    void publish(const StateEstimate& m) override { replay_.onEstimate(m); }
-    void publish(const GainSet& m) override;
-    void publish(const RateCommand& m) override;
-    void publish(const Reference& m) override;
-    // The three cores publish nothing else.
-    void publish(const ImuSample&) override {}
-    void publish(const VioPose&) override {}
-    void publish(const SimTruth&) override {}
-    void publish(const MotorCommand&) override {}
-    void publish(const Command&) override {}
-    void publish(const Disturbance&) override {}
-    void publish(const ParamsUpdate&) override {}
-    void publish(const Trajectory&) override {}
-
-   private:
-    Recomputation& replay_;
+  // What the cores publish (STATE_EST, GAINS, RATE_CMD, REFERENCE), taken on by the replay.
+  struct TakeOutput {
+    Recomputation* replay;
+    template <class Msg>
+    void operator()(const Msg& m) const {
+      replay->onOutput(m);
+    }
   };
+  template <class Msg>
+  void onOutput(const Msg&) {}  // the three cores publish nothing else
+  void onOutput(const StateEstimate& m) { onEstimate(m); }
+  void onOutput(const GainSet& m);
+  void onOutput(const RateCommand& m);
+  void onOutput(const Reference& m);
 
   void onEstimate(const StateEstimate& estimate);
   void feedWallTime(int64_t utime);
   void onRecordedEstimate(const StateEstimate& recorded);
   void onRecordedGains(const GainSet& recorded);
+  bool aheadOfItsImu(const StateEstimate& recorded) const;
+  void onUndecodable(const UndecodableInput& input);
   void updateRejected();
   void feedNamedReference(const StateEstimate& estimate);
   void handOver(const StateEstimate& estimate);
@@ -141,11 +136,12 @@ class Recomputation {
   int64_t solve_period_us_;  // as GainScheduler's grid
   controller::ControllerCore controller_;
   int64_t tick_period_us_;   // as the controller's grid
-  Outputs outbox_{*this};
+  OutboxTo<TakeOutput> outbox_{TakeOutput{this}};
 
   // Recomputed estimates waiting for the log position of the recorded STATE_EST of their seq.
   std::map<int64_t, StateEstimate> waiting_;
   int64_t handed_over_up_to_ = -1;    // highest recorded STATE_EST seq whose place has passed
+  int64_t last_recomputed_seq_ = -1, last_recomputed_utime_ = -1;
   std::size_t next_tick_ = 0;         // index of the next recorded RATE_CMD
   std::size_t next_solve_ = 0;        // index of the next recorded GAINS
   int64_t fed_gains_seq_ = -1;

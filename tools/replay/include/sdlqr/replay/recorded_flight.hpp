@@ -7,13 +7,22 @@
 #include <cstdint>
 #include <vector>
 
+#include "sdlqr/health/reject_reason.hpp"
+#include "sdlqr/health/stream.hpp"
 #include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr::replay {
 
 // kStateEstimate and kGains mark where a recorded output was heard: a recomputed one takes its
 // place there, a foreign one (forged, replayed) is fed to the cores as it was on the bus.
-enum class InputKind : uint8_t { kImu, kVioPose, kStateEstimate, kCommand, kTrajectory, kParams, kGains };
+// kUndecodable is a message of an input channel the bus's decode step refused (size walk, decode).
+enum class InputKind : uint8_t { kImu, kVioPose, kStateEstimate, kCommand, kTrajectory, kParams, kGains, kUndecodable };
+
+struct UndecodableInput {
+  int64_t utime = 0;  // [us] of the input before it (its own bytes hold no time to trust)
+  Stream stream = Stream::kOther;
+  RejectReason reason = RejectReason::kNone;
+};
 
 struct LogPosition {
   InputKind kind;
@@ -28,6 +37,7 @@ struct RecordedFlight {
   std::vector<Command> command;
   std::vector<Trajectory> trajectory;
   std::vector<ParamsUpdate> params;
+  std::vector<UndecodableInput> undecodable;
 
   // Recorded outputs, each in log order.
   std::vector<StateEstimate> state_estimate;
