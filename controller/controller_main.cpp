@@ -12,14 +12,10 @@ using controller::ControllerCore;
 
 int main(int argc, char** argv) {
   return runMain("sdlqr-controller", [&] {
-    ProcessOptions options;
-    ArgParser parser("sdlqr-controller",
-                     "State-dependent LQR at 100 Hz of simulation time: u = u0 + K (x - x0) with the newest\n"
-                     "GAINS, the paper's input limits and a setpoint or trajectory reference.\n"
-                     "In: STATE_EST, GAINS, TRAJECTORY, PARAMS, COMMAND.  Out: RATE_CMD, REFERENCE, HEARTBEAT.");
-    addProcessOptions(parser, &options);
-    parser.setEpilog("exit codes: 0 stopped by SIGINT/SIGTERM, 1 runtime failure, 2 bad option or configuration");
-    parser.parseOrExit(argc, argv);
+    const ProcessOptions options = parseProcessCommandLine(argc, argv, "sdlqr-controller",
+        "State-dependent LQR at 100 Hz of simulation time: u = u0 + K (x - x0) with the newest\n"
+        "GAINS, the paper's input limits and a setpoint or trajectory reference.\n"
+        "In: STATE_EST, GAINS, TRAJECTORY, PARAMS, COMMAND.  Out: RATE_CMD, REFERENCE, HEARTBEAT.");
 
     const ConfigReader config = loadVehicleConfig(options.config_path);
     ControllerCore core(LqrParams::load(config.child("lqr")), controller::ControllerParams::load(config.child("controller")),

@@ -11,18 +11,12 @@ using namespace sdlqr;
 using estimator::EstimatorCore;
 
 int main(int argc, char** argv) {
-  ArgParser parser("sdlqr-estimator",
-                   "Error-state EKF: fuses IMU with delayed VIO poses at their capture time and publishes\n"
-                   "STATE_EST at the configured rate (default 250 Hz) on the IMU-time grid. Reads the\n"
-                   "`estimator:` section of the vehicle file. Never reads SIM_TRUTH.");
-  ProcessOptions options;
-  addProcessOptions(parser, &options);
-  parser.setEpilog(
-      "channels: in IMU, VIO_POSE; out STATE_EST, HEARTBEAT (with the vehicle prefix if given)\n"
-      "exit codes: 0 stopped by SIGINT/SIGTERM, 1 runtime failure, 2 bad option or configuration");
-  parser.parseOrExit(argc, argv);
-
-  return runMain(parser.program(), [&]() {
+  const ProcessOptions options = parseProcessCommandLine(argc, argv, "sdlqr-estimator",
+      "Error-state EKF: fuses IMU with delayed VIO poses at their capture time and publishes\n"
+      "STATE_EST at the configured rate (default 250 Hz) on the IMU-time grid. Reads the\n"
+      "`estimator:` section of the vehicle file. Never reads SIM_TRUTH.\n"
+      "In: IMU, VIO_POSE.  Out: STATE_EST, HEARTBEAT (with the vehicle prefix if given).");
+  return runMain("sdlqr-estimator", [&]() {
     estimator::EstimatorParams params;
     // The vehicle file's reader: an unknown section is an error here as in every process.
     if (!options.config_path.empty()) params = estimator::EstimatorParams::load(loadVehicleConfig(options.config_path).child("estimator"));

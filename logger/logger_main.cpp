@@ -35,11 +35,7 @@ int runRecord(int argc, const char* const* argv) {
   const auto drain_until = std::chrono::steady_clock::now() + std::chrono::milliseconds(200);
   while (std::chrono::steady_clock::now() < drain_until) node.lcm().handleTimeout(20);
   core.stop();
-  const logger::RecorderStats s = core.recorder().stats();
-  std::cout << kLoggerProgram << ": wrote " << s.written << " messages (" << s.bytes_written << " bytes) to "
-            << core.recorder().path() << "; dropped " << s.dropped << ", write errors " << s.write_errors << std::endl;
-  if (s.write_errors > 0) std::cerr << kLoggerProgram << ": " << s.last_error << "\n";
-  return s.write_errors > 0 ? 1 : 0;
+  return logger::reportRecording(core.recorder().stats(), core.recorder().path());
 }
 
 }  // namespace

@@ -14,14 +14,10 @@ using lowlevel::LowlevelCore;
 
 int main(int argc, char** argv) {
   return runMain("sdlqr-lowlevel", [&] {
-    ProcessOptions options;
-    ArgParser parser("sdlqr-lowlevel",
-                     "Bodyrate loop, one step per IMU sample (1 kHz): rate PID, mixer with desaturation,\n"
-                     "arming, and the RATE_CMD-silent failsafe (level, descend, disarm on the ground).\n"
-                     "In: IMU, RATE_CMD, COMMAND, PARAMS (FIELD_MASS).  Out: MOTOR_CMD, HEARTBEAT.");
-    addProcessOptions(parser, &options);
-    parser.setEpilog("exit codes: 0 stopped by SIGINT/SIGTERM, 1 runtime failure, 2 bad option or configuration");
-    parser.parseOrExit(argc, argv);
+    const ProcessOptions options = parseProcessCommandLine(argc, argv, "sdlqr-lowlevel",
+        "Bodyrate loop, one step per IMU sample (1 kHz): rate PID, mixer with desaturation,\n"
+        "arming, and the RATE_CMD-silent failsafe (level, descend, disarm on the ground).\n"
+        "In: IMU, RATE_CMD, COMMAND, PARAMS (FIELD_MASS).  Out: MOTOR_CMD, HEARTBEAT.");
 
     const ConfigReader config = loadVehicleConfig(options.config_path);
     const VehicleParams vehicle = VehicleParams::load(config.child("vehicle"));

@@ -34,10 +34,7 @@ int main(int argc, char** argv) {
     bus::Node node("sdlqr-mission", options, core.health());
     bus::NodeOutbox outbox(node);
     node.subscribe<imu_t>(channel::kImu, [&](const imu_t& imu) { core.onClock(imu.utime, outbox); });
-    core.setObserver([](const mission::ScenarioEvent& event, int64_t utime) {
-      std::fprintf(stderr, "sdlqr-mission: t=%7.3f s  %s\n", 1e-6 * static_cast<double>(utime),
-                   mission::describeEvent(event).c_str());
-    });
+    core.setObserver(&mission::logEventToStderr);
     std::fprintf(stderr, "sdlqr-mission: scenario '%s', %zu events, %.1f s\n", scenario.name.c_str(),
                  scenario.events.size(), scenario.duration);
     while (node.spin(20) && !core.finished() && !core.clockLost()) core.onWallTime(bus::monotonicSeconds());

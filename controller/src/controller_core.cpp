@@ -55,10 +55,8 @@ RejectReason ControllerCore::onGains(const GainSet& gains) {
 }
 
 RejectReason ControllerCore::onCommand(const Command& command) {
-  const RejectReason reason = admitOrdered(command, limits_, command_order_, state_clock_.now());
-  if (health_.reject(Stream::kCommand, reason)) return reason;
-  lqr_.handleCommand(command);
-  return RejectReason::kNone;
+  return health_.admit(Stream::kCommand, admitOrdered(command, limits_, command_order_, state_clock_.now()),
+                       [&] { lqr_.handleCommand(command); });
 }
 
 RejectReason ControllerCore::onTrajectory(const Trajectory& trajectory) {
@@ -72,10 +70,8 @@ RejectReason ControllerCore::onTrajectory(const Trajectory& trajectory) {
 }
 
 RejectReason ControllerCore::onParams(const ParamsUpdate& update) {
-  const RejectReason reason = admitOrdered(update, limits_, params_order_, state_clock_.now());
-  if (health_.reject(Stream::kParams, reason)) return reason;
-  lqr_.applyParams(update);
-  return RejectReason::kNone;
+  return health_.admit(Stream::kParams, admitOrdered(update, limits_, params_order_, state_clock_.now()),
+                       [&] { lqr_.applyParams(update); });
 }
 
 void ControllerCore::onWallTime(double now_s) {

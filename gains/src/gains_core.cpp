@@ -37,10 +37,7 @@ RejectReason GainsCore::onStateEstimate(const StateEstimate& estimate, Outbox& o
 }
 
 RejectReason GainsCore::onReference(const Reference& reference) {
-  const RejectReason reason = validate(reference, limits_);
-  if (health_.reject(Stream::kReference, reason)) return reason;
-  scheduler_.setReference(reference);
-  return RejectReason::kNone;
+  return health_.admit(Stream::kReference, validate(reference, limits_), [&] { scheduler_.setReference(reference); });
 }
 
 RejectReason GainsCore::onParams(const ParamsUpdate& update) {

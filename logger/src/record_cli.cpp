@@ -2,6 +2,7 @@
 
 #include <ctime>
 #include <filesystem>
+#include <iostream>
 #include <stdexcept>
 #include <string>
 
@@ -85,6 +86,14 @@ RecordCommand parseRecordCommand(int argc, const char* const* argv) {
   checkChannelRegex(command.pattern);
   command.recorder.path = logPath(out, dir, scenario);
   return command;
+}
+
+int reportRecording(const RecorderStats& s, const std::string& path) {
+  std::cout << kProgram << ": wrote " << s.written << " messages (" << s.bytes_written << " bytes) to " << path
+            << "; dropped " << s.dropped << ", write errors " << s.write_errors << std::endl;
+  if (s.write_errors == 0) return 0;
+  std::cerr << kProgram << ": " << s.last_error << "\n";
+  return 1;
 }
 
 }  // namespace sdlqr::logger

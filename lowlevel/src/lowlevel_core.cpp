@@ -47,10 +47,7 @@ RejectReason LowlevelCore::onImu(const ImuSample& sample, Outbox& out) {
 }
 
 RejectReason LowlevelCore::onRateCommand(const RateCommand& command) {
-  const RejectReason reason = loop_.setRateCommand(command);
-  if (health_.reject(Stream::kRateCommand, reason)) return reason;
-  rate_watchdog_.feed(wall_now_s_);
-  return RejectReason::kNone;
+  return health_.admit(Stream::kRateCommand, loop_.setRateCommand(command), [&] { rate_watchdog_.feed(wall_now_s_); });
 }
 
 RejectReason LowlevelCore::onCommand(const Command& command) {

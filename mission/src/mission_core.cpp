@@ -123,4 +123,8 @@ std::string describeEvent(const ScenarioEvent& event) {
   return line;
 }
 
+void logEventToStderr(const ScenarioEvent& event, int64_t utime) {
+  std::fprintf(stderr, "sdlqr-mission: t=%7.3f s  %s\n", 1e-6 * static_cast<double>(utime), describeEvent(event).c_str());
+}
+
 }  // namespace sdlqr::mission

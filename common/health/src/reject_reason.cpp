@@ -2,54 +2,45 @@
 
 namespace sdlqr {
 
-const char* reasonName(RejectReason reason) {
-  switch (reason) {
-    case RejectReason::kNone: return "none";
-    case RejectReason::kDecode: return "decode";
-    case RejectReason::kBadSize: return "size";
-    case RejectReason::kNonFinite: return "nonfinite";
-    case RejectReason::kQuaternionNorm: return "quaternion";
-    case RejectReason::kOutOfRange: return "range";
-    case RejectReason::kBadEnum: return "enum";
-    case RejectReason::kBadStatus: return "status";
-    case RejectReason::kTimeBackwards: return "time_backwards";
-    case RejectReason::kTimeFuture: return "time_future";
-    case RejectReason::kTimeGap: return "time_gap";
-    case RejectReason::kStale: return "stale";
-    case RejectReason::kNoClock: return "no_clock";
-    case RejectReason::kGated: return "gated";
-    case RejectReason::kSuperseded: return "superseded";
-    case RejectReason::kQueueFull: return "queue_full";
-    case RejectReason::kUnstable: return "unstable";
-    case RejectReason::kRefused: return "refused";
-    case RejectReason::kCount: break;
-  }
-  return "unknown";
+namespace {
+
+struct ReasonNames {
+  const char* name;
+  const char* counter;
+};
+
+// Indexed by RejectReason.
+constexpr ReasonNames kNames[] = {
+    {"none", "reject.none"},
+    {"decode", "reject.decode"},
+    {"size", "reject.size"},
+    {"nonfinite", "reject.nonfinite"},
+    {"quaternion", "reject.quaternion"},
+    {"range", "reject.range"},
+    {"enum", "reject.enum"},
+    {"status", "reject.status"},
+    {"time_backwards", "reject.time_backwards"},
+    {"time_future", "reject.time_future"},
+    {"time_gap", "reject.time_gap"},
+    {"stale", "reject.stale"},
+    {"no_clock", "reject.no_clock"},
+    {"gated", "reject.gated"},
+    {"superseded", "reject.superseded"},
+    {"queue_full", "reject.queue_full"},
+    {"unstable", "reject.unstable"},
+    {"refused", "reject.refused"},
+};
+static_assert(sizeof(kNames) / sizeof(kNames[0]) == kRejectReasonCount, "one name per reason");
+
+const ReasonNames& namesOf(RejectReason reason) {
+  static constexpr ReasonNames kUnknown{"unknown", "reject.unknown"};
+  const auto i = static_cast<int>(reason);
+  return i >= 0 && i < kRejectReasonCount ? kNames[i] : kUnknown;
 }
 
-const char* counterName(RejectReason reason) {
-  switch (reason) {
-    case RejectReason::kNone: return "reject.none";
-    case RejectReason::kDecode: return "reject.decode";
-    case RejectReason::kBadSize: return "reject.size";
-    case RejectReason::kNonFinite: return "reject.nonfinite";
-    case RejectReason::kQuaternionNorm: return "reject.quaternion";
-    case RejectReason::kOutOfRange: return "reject.range";
-    case RejectReason::kBadEnum: return "reject.enum";
-    case RejectReason::kBadStatus: return "reject.status";
-    case RejectReason::kTimeBackwards: return "reject.time_backwards";
-    case RejectReason::kTimeFuture: return "reject.time_future";
-    case RejectReason::kTimeGap: return "reject.time_gap";
-    case RejectReason::kStale: return "reject.stale";
-    case RejectReason::kNoClock: return "reject.no_clock";
-    case RejectReason::kGated: return "reject.gated";
-    case RejectReason::kSuperseded: return "reject.superseded";
-    case RejectReason::kQueueFull: return "reject.queue_full";
-    case RejectReason::kUnstable: return "reject.unstable";
-    case RejectReason::kRefused: return "reject.refused";
-    case RejectReason::kCount: break;
-  }
-  return "reject.unknown";
-}
+}  // namespace
+
+const char* reasonName(RejectReason reason) { return namesOf(reason).name; }
+const char* counterName(RejectReason reason) { return namesOf(reason).counter; }
 
 }  // namespace sdlqr

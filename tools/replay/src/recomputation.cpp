@@ -156,18 +156,30 @@ void Recomputation::handOver(const StateEstimate& estimate) {
   controllerOnEstimate(estimate);
 }
 
-// The GAINS a recorded tick names, recomputed if the replay has it, else as recorded.
+// The output of `seq` a recorded one names: recomputed if the replay has it (counted in
+// from_replay), else as recorded (from_record); nullptr if neither.
+template <class T>
+const T* Recomputation::named(int64_t seq, const SeqIndex& replayed, const std::vector<T>& replayed_series,
+                              const SeqIndex& recorded, const std::vector<T>& recorded_series, int64_t& from_replay,
+                              int64_t& from_record) {
+  if (auto it = replayed.find(seq); it != replayed.end()) {
+    ++from_replay;
+    return &replayed_series[it->second];
+  }
+  if (auto it = recorded.find(seq); it != recorded.end()) {
+    ++from_record;
+    return &recorded_series[it->second];
+  }
+  return nullptr;
+}
+
+// The GAINS a recorded tick names.
 void Recomputation::feedNamedGains(int64_t gains_seq) {
   if (gains_seq < 0 || gains_seq == fed_gains_seq_) return;
-  if (auto it = replayed_gains_.find(gains_seq); it != replayed_gains_.end()) {
-    controller_.onGains(outputs_.gains[it->second]);
-    ++pairing_.gains_from_replay;
-  } else if (auto rec = recorded_gains_.find(gains_seq); rec != recorded_gains_.end()) {
-    controller_.onGains(flight_.gains[rec->second]);
-    ++pairing_.gains_from_record;
-  } else {
-    return;
-  }
+  const GainSet* gains = named(gains_seq, replayed_gains_, outputs_.gains, recorded_gains_, flight_.gains,
+                               pairing_.gains_from_replay, pairing_.gains_from_record);
+  if (gains == nullptr) return;
+  controller_.onGains(*gains);
   fed_gains_seq_ = gains_seq;
 }
 
@@ -251,14 +263,10 @@ void Recomputation::feedNamedReference(const StateEstimate& estimate) {
     ++pairing_.solves_unpaired;
     return;
   }
-  const int64_t reference_seq = solves[next_solve_].reference_seq;
-  if (auto it = replayed_reference_.find(reference_seq); it != replayed_reference_.end()) {
-    gains_.onReference(outputs_.reference[it->second]);
-    ++pairing_.references_from_replay;
-  } else if (auto rec = recorded_reference_.find(reference_seq); rec != recorded_reference_.end()) {
-    gains_.onReference(flight_.reference[rec->second]);
-    ++pairing_.references_from_record;
-  }
+  const Reference* reference =
+      named(solves[next_solve_].reference_seq, replayed_reference_, outputs_.reference, recorded_reference_,
+            flight_.reference, pairing_.references_from_replay, pairing_.references_from_record);
+  if (reference != nullptr) gains_.onReference(*reference);
 }
 
 // COMMAND and STATE_EST race on the bus like GAINS do: the REFERENCE of the tick computed from

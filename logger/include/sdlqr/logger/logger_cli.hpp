@@ -22,6 +22,10 @@ struct RecordCommand {
 // std::invalid_argument naming the option when a value is unusable.
 RecordCommand parseRecordCommand(int argc, const char* const* argv);
 
+// After recording: the summary line on stdout, the write error on stderr; returns the exit code
+// (1 when anything could not be written).
+int reportRecording(const RecorderStats& stats, const std::string& path);
+
 // `export LOG --out DIR`: CSV per channel + metrics.json. Returns the exit code.
 int runExportCommand(int argc, const char* const* argv);
 

@@ -66,5 +66,7 @@ class MissionCore {
 
 // One line for the log: "command goto (1.00, 0.00, 1.00) yaw 0.00  [label]".
 std::string describeEvent(const ScenarioEvent& event);
+// An EventObserver: "sdlqr-mission: t=  1.000 s  <describeEvent>" on stderr.
+void logEventToStderr(const ScenarioEvent& event, int64_t utime);
 
 }  // namespace sdlqr::mission

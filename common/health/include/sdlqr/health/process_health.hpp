@@ -28,6 +28,13 @@ class ProcessHealth {
     ++rejected_;
     return true;
   }
+  // A handler in one line: counts `reason` for `stream` and returns it, or, when kNone, runs use().
+  template <class Use>
+  RejectReason admit(Stream stream, RejectReason reason, Use&& use) {
+    if (reject(stream, reason)) return reason;
+    use();
+    return RejectReason::kNone;
+  }
   int64_t rejections(Stream stream, RejectReason reason) const { return rejects_[index(stream)][index(reason)]; }
   int64_t rejections(RejectReason reason) const;  // over every stream
   int64_t rejected() const { return rejected_; }

@@ -121,6 +121,11 @@ class Recomputation {
   void controllerOnEstimate(const StateEstimate& estimate);
   bool missedByController(const StateEstimate& estimate, const RateCommand& recorded) const;
   void gainsOnEstimate(const StateEstimate& estimate);
+  using SeqIndex = std::map<int64_t, std::size_t>;  // seq -> index into a series
+  template <class T>
+  static const T* named(int64_t seq, const SeqIndex& replayed, const std::vector<T>& replayed_series,
+                        const SeqIndex& recorded, const std::vector<T>& recorded_series, int64_t& from_replay,
+                        int64_t& from_record);
   void feedNamedGains(int64_t gains_seq);
   void deliverCommandsBefore(const StateEstimate& estimate);
   void applyCommand(std::size_t index);
@@ -149,8 +154,8 @@ class Recomputation {
   std::vector<bool> command_delivered_;      // by index into flight_.command
   int64_t applied_command_seq_ = -1;         // highest seq delivered
   // Recomputed outputs by seq, for the pairing.
-  std::map<int64_t, std::size_t> replayed_gains_, replayed_reference_;
-  std::map<int64_t, std::size_t> recorded_gains_, recorded_reference_, recorded_estimate_;
+  SeqIndex replayed_gains_, replayed_reference_;
+  SeqIndex recorded_gains_, recorded_reference_, recorded_estimate_;
 };
 
 }  // namespace sdlqr::replay
