@@ -1,9 +1,10 @@
 // The process cores allocate nothing on their flight paths: the simulator's step and MOTOR_CMD,
 // the estimator's IMU and VIO_POSE, the gain solver's STATE_EST (solve) and REFERENCE, the
-// controller's STATE_EST (tick) and GAINS (with the closed-loop check), the lowlevel's IMU and
-// RATE_CMD, and every core's onWallTime. The cores are wired as on the bus (no recording), the
-// vehicle armed and flown to a hover first, then a hover of 3 s is counted (counted by the
-// replaced operator new of tests/support).
+// controller's STATE_EST (tick), GAINS (with the closed-loop check) and COMMAND, the lowlevel's
+// IMU, RATE_CMD and COMMAND, the mission's clock (its setpoint jump and re-sends included), and
+// every core's onWallTime. The cores are wired as on the bus (no recording); hover_short's
+// take-off is flown first, then 3 s around its setpoint jump are counted (by the replaced
+// operator new of tests/support).
 
 #include <gtest/gtest.h>
 
@@ -15,12 +16,14 @@
 #include "sdlqr/estimator/estimator_core.hpp"
 #include "sdlqr/gains/gains_core.hpp"
 #include "sdlqr/lowlevel/lowlevel_core.hpp"
+#include "sdlqr/mission/mission_core.hpp"
 #include "sdlqr/sim/sim_core.hpp"
 
 namespace sdlqr {
 namespace {
 
 const std::string kVehicle = std::string(SDLQR_SOURCE_DIR) + "/config/quad255.yaml";
+const std::string kScenario = std::string(SDLQR_SOURCE_DIR) + "/tests/integration/replay/hover_short.yaml";
 
 struct Config {
   ConfigReader root = loadVehicleConfig(kVehicle);
@@ -32,8 +35,9 @@ struct Config {
 // The channels of the bus, without the bus.
 class Stack final : public Outbox {
  public:
-  explicit Stack(const Config& c)
-      : sim_(c.vehicle, sim::SimParams::load(c.root.child("sim"))),
+  Stack(const Config& c, const mission::Scenario& scenario)
+      : mission_(scenario, trajectory::TrajectoryParams::load(c.root.child("trajectory")), c.lqr, {}),
+        sim_(c.vehicle, sim::SimParams::load(c.root.child("sim"))),
         estimator_(estimator::EstimatorParams::load(c.root.child("estimator"))),
         gains_(c.lqr, gains::GainsParams::load(c.root.child("gains")), c.faults),
         controller_(c.lqr, controller::ControllerParams::load(c.root.child("controller")), c.faults),
@@ -46,21 +50,13 @@ class Stack final : public Outbox {
     lowlevel_.onWallTime(now_s);
     sim_.step(*this);
   }
-  void command(CommandType type, int64_t seq) {
-    Command c;
-    c.utime = sim_.simulator().utime();
-    c.seq = seq;
-    c.command = type;
-    c.position = Vec3(0.0, 0.0, 1.0);
-    controller_.onCommand(c);
-    lowlevel_.onCommand(c);
-  }
   const sim::SimCore& sim() const { return sim_; }
   const controller::ControllerCore& controller() const { return controller_; }
   const gains::GainsCore& gains() const { return gains_; }
 
  private:
   void publish(const ImuSample& m) override {
+    mission_.onClock(m.utime, *this);
     lowlevel_.onImu(m, *this);
     estimator_.onImu(m, *this);
   }
@@ -74,11 +70,15 @@ class Stack final : public Outbox {
   void publish(const RateCommand& m) override { lowlevel_.onRateCommand(m); }
   void publish(const Reference& m) override { gains_.onReference(m); }
   void publish(const MotorCommand& m) override { sim_.onMotorCommand(m); }
-  void publish(const Command&) override {}
+  void publish(const Command& m) override {
+    controller_.onCommand(m);
+    lowlevel_.onCommand(m);
+  }
   void publish(const Disturbance&) override {}
   void publish(const ParamsUpdate&) override {}
   void publish(const Trajectory&) override {}
 
+  mission::MissionCore mission_;
   sim::SimCore sim_;
   estimator::EstimatorCore estimator_;
   gains::GainsCore gains_;
@@ -89,11 +89,9 @@ class Stack final : public Outbox {
 TEST(CoresAllocation, AHoverAllocatesNothingInAnyCore) {
   if (testing::kSanitizedBuild) GTEST_SKIP() << "built with AddressSanitizer, whose allocator replaces operator new";
   const Config config;
-  Stack stack(config);
-  for (int i = 0; i < 500; ++i) stack.step();
-  stack.command(CommandType::kArm, 0);
-  stack.command(CommandType::kTakeoff, 1);
-  for (int i = 0; i < 5000; ++i) stack.step();  // airborne, at 1 m
+  const mission::Scenario scenario = mission::Scenario::load(kScenario);
+  Stack stack(config, scenario);
+  for (int i = 0; i < 5000; ++i) stack.step();  // armed at 0.5 s, took off at 1 s: at 1 m
   const int64_t ticks_before = stack.controller().health().counter("controller.ticks");
   const int64_t solves_before = stack.gains().health().counter("gains.solves");
 
@@ -110,6 +108,7 @@ TEST(CoresAllocation, AHoverAllocatesNothingInAnyCore) {
   EXPECT_GE(ticks, 290);
   EXPECT_GE(solves, 29);
   EXPECT_NEAR(stack.sim().simulator().body().position.z(), 1.0, 0.2);
+  EXPECT_GT(stack.sim().simulator().body().position.x(), 0.2);  // the jump to x = 0.5 m was flown
   EXPECT_EQ(stack.controller().health().rejected() + stack.gains().health().rejected(), 0);
 }
 
