@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "sdlqr/analysis/flight_report.hpp"
+#include "sdlqr/calibrate/calibration.hpp"
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/config/config.hpp"
 #include "sdlqr/math/lqr_params.hpp"
@@ -12,7 +13,7 @@ using namespace sdlqr;
 
 int main(int argc, char** argv) {
   return runMain("sdlqr-analyze", [&] {
-    std::string scenario_path, vehicle, json_path, summary_path;
+    std::string scenario_path, vehicle, json_path, summary_path, calibration_path;
     std::vector<std::string> positional;
     ArgParser parser("sdlqr-analyze",
                      "Computes the scenario metrics of a flight log (settling after each reference jump,\n"
@@ -22,6 +23,9 @@ int main(int argc, char** argv) {
     parser.addOption("--vehicle", &vehicle, "PREFIX", "channel prefix of the vehicle to analyse");
     parser.addOption("--json", &json_path, "FILE", "write the full report as JSON");
     parser.addOption("--summary", &summary_path, "FILE", "also write the printed summary to FILE");
+    parser.addOption("--calibration", &calibration_path, "FILE",
+                     "this machine's bus measured before the flight (sdlqr-calibrate --out FILE): needed by\n"
+                     "the relative budgets (stack_cpu_relative_max, state_to_command_latency_relative_max)");
     parser.allowPositional(&positional, "LOG.lcmlog");
     parser.setEpilog("exit codes: 0 every check passes, 1 a check fails, 2 bad arguments or unreadable files");
     parser.parseOrExit(argc, argv);
@@ -40,6 +44,7 @@ int main(int argc, char** argv) {
     analysis::AnalysisOptions options;
     options.path.thrust_min = lqr.c_min;
     options.path.thrust_max = lqr.c_max;
+    if (!calibration_path.empty()) options.calibration = calibrate::Calibration::load(calibration_path);
     const analysis::FlightReport report = analysis::analyzeFlight(log, scenario, options);
     analysis::writeSummary(report, std::cout);
     if (!summary_path.empty()) {

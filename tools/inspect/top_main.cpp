@@ -4,8 +4,10 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <iostream>
+#include <set>
 
 #include "sdlqr/messages/channels.hpp"
 #include "sdlqr/config/cli.hpp"
@@ -30,6 +32,29 @@ bool isHeartbeat(const std::string& channel) {
          (channel.size() == base.size() || channel[channel.size() - base.size() - 1] == '/');
 }
 
+// --wait-for: returns once every named process has published a HEARTBEAT on this vehicle's
+// channel (the launcher starts the simulator only then), or names the missing ones on timeout.
+int waitForHeartbeats(bus::Node& bus, const std::string& names, double timeout_s) {
+  std::set<std::string> missing;
+  for (size_t start = 0; start <= names.size();) {
+    const size_t comma = std::min(names.find(',', start), names.size());
+    if (comma > start) missing.insert(names.substr(start, comma - start));
+    start = comma + 1;
+  }
+  if (missing.empty()) throw std::invalid_argument("--wait-for: expected process names separated by commas");
+  const std::string channel = bus.channel(channel::kHeartbeat);
+  bus.subscribe<heartbeat_t>(channel::kHeartbeat, [&](const heartbeat_t& hb) { missing.erase(hb.process); }, 256);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (!missing.empty() && bus.spin(20)) {
+    if (std::chrono::steady_clock::now() > deadline) break;
+  }
+  if (missing.empty()) return 0;
+  std::string text;
+  for (const std::string& name : missing) text += (text.empty() ? "" : ", ") + name;
+  std::cerr << "sdlqr-top: no HEARTBEAT on " << channel << " within " << timeout_s << " s from: " << text << "\n";
+  return 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -38,6 +63,8 @@ int main(int argc, char** argv) {
     double duration_s = 0.0;
     double period_s = 1.0;
     bool plain = false;
+    std::string wait_for;
+    double wait_timeout_s = 10.0;
     ArgParser parser("sdlqr-top",
                      "Terminal view of the bus: once a second each channel's rate, the age of its newest\n"
                      "message and its size, and each process's HEARTBEAT (state, CPU, received, published,\n"
@@ -47,11 +74,20 @@ int main(int argc, char** argv) {
     parser.addOption("--duration", &duration_s, "S", "stop after S seconds of wall time (default: until Ctrl-C)");
     parser.addOption("--period", &period_s, "S", "seconds between reports (default 1)");
     parser.addFlag("--plain", &plain, "never clear the screen (default when stdout is not a terminal)");
+    parser.addOption("--wait-for", &wait_for, "P1,P2,...",
+                     "only wait until each named process (e.g. sdlqr-estimator) has sent a HEARTBEAT on this\n"
+                     "vehicle's channel, then exit 0 (1 after --timeout)");
+    parser.addOption("--timeout", &wait_timeout_s, "S", "for --wait-for, default 10 s of wall time");
     parser.setEpilog("exit codes: 0 stopped by SIGINT/SIGTERM or --duration, 2 bad option");
     parser.parseOrExit(argc, argv);
     if (!(duration_s >= 0.0)) throw std::invalid_argument("--duration: must be >= 0, got " + std::to_string(duration_s));
     if (!(period_s >= 0.1)) throw std::invalid_argument("--period: must be >= 0.1 s, got " + std::to_string(period_s));
     const bool clear = !plain && ::isatty(STDOUT_FILENO);
+    if (!wait_for.empty()) {
+      if (!(wait_timeout_s > 0.0)) throw std::invalid_argument("--timeout: must be > 0");
+      bus::Node bus("sdlqr-top", options);
+      return waitForHeartbeats(bus, wait_for, wait_timeout_s);
+    }
 
     inspect::BusMonitor monitor;
     bus::Node bus("sdlqr-top", options);

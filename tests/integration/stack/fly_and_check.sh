@@ -20,4 +20,4 @@ launch_status=$?
 echo "fly_and_check: launcher exit code $launch_status"
 [ "$launch_status" -eq 0 ] || exit 1
 "$build/bin/sdlqr-analyze" "$log" --scenario "$scenario" "${vehicle_args[@]+"${vehicle_args[@]}"}" \
-  --json "$work/report.json"
+  --calibration "$work/calibration.yaml" --json "$work/report.json"

@@ -1,7 +1,9 @@
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
 
+#include "sdlqr/analysis/criteria.hpp"
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/logger/json_writer.hpp"
 
@@ -33,6 +35,62 @@ std::string format(const char* fmt, double value) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, fmt, value);
   return buffer;
+}
+
+std::string formatVec3(const Vec3& v, const char* unit) {
+  char buffer[96];
+  std::snprintf(buffer, sizeof buffer, "(%.2f, %.2f, %.2f) %s", v[0], v[1], v[2], unit);
+  return buffer;
+}
+
+const char* disturbanceKind(const Disturbance& d) {
+  if (d.mode == DisturbanceMode::kHold) return "hold";
+  if (d.torque.isZero()) return "force";
+  return d.force.isZero() ? "torque" : "force+torque";
+}
+
+void writeChecks(logger::JsonWriter& json, const FlightReport& r) {
+  json.key("checks");
+  json.beginArray();
+  for (const Check& c : r.checks) {
+    json.beginObject();
+    json.member("name", c.name);
+    json.member("key", c.key);
+    json.member("window", c.window);
+    json.member("description", c.description);
+    json.member("unit", c.unit);
+    json.member("value", c.value);
+    json.member("limit", c.limit);
+    json.member("rule", c.upper ? "<=" : ">=");
+    json.memberBool("pass", c.pass);
+    json.endObject();
+  }
+  json.endArray();
+  json.key("not_judged");
+  json.beginArray();
+  for (const NotJudged& n : r.not_judged) {
+    json.beginObject();
+    json.member("key", n.key);
+    json.member("reason", n.reason);
+    json.endObject();
+  }
+  json.endArray();
+}
+
+void writeCalibration(logger::JsonWriter& json, const FlightReport& r) {
+  if (!r.calibration) return;
+  const calibrate::Calibration& c = *r.calibration;
+  json.key("calibration");
+  json.beginObject();
+  json.member("echo_rate_hz", c.echo_rate_hz);
+  json.member("rtt_median_us", c.rtt_median_us);
+  json.member("rtt_p99_us", c.rtt_p99_us);
+  json.member("cpu_percent", c.cpu_percent);
+  json.member("host", c.host);
+  json.member("date", c.date);
+  json.endObject();
+  json.member("stack_cpu_relative", r.stack_cpu_relative);
+  json.member("state_to_command_relative", r.state_to_command_relative);
 }
 
 }  // namespace
@@ -69,7 +127,13 @@ void writeJson(const FlightReport& r, std::ostream& out) {
     json.member("label", p.label);
     json.member("start_s", p.start);
     json.member("release_s", p.release);
-    writeVec3(json, "force_n", p.force);
+    json.member("kind", disturbanceKind(p.disturbance));
+    writeVec3(json, "force_n", p.disturbance.force);
+    writeVec3(json, "torque_nm", p.disturbance.torque);
+    if (p.disturbance.mode == DisturbanceMode::kHold) {
+      writeVec3(json, "hold_position_m", p.disturbance.hold_position);
+      json.member("hold_stiffness_n_per_m", p.disturbance.hold_stiffness);
+    }
     writeVec3(json, "setpoint_m", p.setpoint);
     json.member("max_deviation_m", p.max_deviation);
     json.member("return_time_s", p.return_time);
@@ -172,48 +236,58 @@ void writeJson(const FlightReport& r, std::ostream& out) {
   }
   json.endArray();
   json.member("stack_cpu_percent", r.stack_cpu_percent);
+  writeCalibration(json, r);
   json.memberInt("nonfinite_messages", r.nonfinite);
   json.member("max_tilt_deg", r.max_tilt_deg);
   json.member("touchdown_speed_mps", r.touchdown_speed);
   json.memberBool("crashed", r.crashed);
-  json.key("checks");
-  json.beginArray();
-  for (const Check& c : r.checks) {
-    json.beginObject();
-    json.member("name", c.name);
-    json.member("value", c.value);
-    json.member("limit", c.limit);
-    json.member("rule", c.upper ? "<=" : ">=");
-    json.memberBool("pass", c.pass);
-    json.endObject();
-  }
-  json.endArray();
+  writeChecks(json, r);
   json.endObject();
   out << "\n";
 }
 
-void writeSummary(const FlightReport& r, std::ostream& out) {
-  int passed = 0;
-  for (const Check& c : r.checks) passed += c.pass ? 1 : 0;
-  char line[512];
-  std::snprintf(line, sizeof line, "scenario %s: %s (%d of %zu checks pass)\n", r.scenario.c_str(),
-                r.passed() ? "PASS" : "FAIL", passed, r.checks.size());
-  out << line;
-  if (!r.setpoints.empty()) {
-    out << "  setpoint            size    settle (<5 cm)  overshoot  steady error\n";
-    for (const SetpointWindow& w : r.setpoints) {
-      std::snprintf(line, sizeof line, "  %-18s %5.2f m  %-14s  %7s  %s\n", w.label.c_str(), w.size,
-                    format("%.2f s", w.settle_time).c_str(), w.is_jump ? format("%.1f %%", 100.0 * w.overshoot).c_str() : "-",
-                    format("%.1f cm", 100.0 * w.steady_error).c_str());
-      out << line;
-    }
+namespace {
+
+// "force (0.00, 2.00, 0.00) N for 0.50 s", "torque (...) N m for 0.15 s", "spring hold at ...".
+std::string describeDisturbance(const Disturbance& d) {
+  std::string text;
+  if (d.mode == DisturbanceMode::kHold) {
+    char buffer[128];
+    std::snprintf(buffer, sizeof buffer, "spring %.0f N/m holding at ", d.hold_stiffness);
+    text = buffer + formatVec3(d.hold_position, "m");
+  } else {
+    if (!d.force.isZero() || d.torque.isZero()) text = "force " + formatVec3(d.force, "N");
+    if (!d.torque.isZero()) text += (text.empty() ? "torque " : " + torque ") + formatVec3(d.torque, "N m");
   }
-  for (const PullWindow& p : r.pulls) {
-    std::snprintf(line, sizeof line, "  %-18s %.1f N for %.2f s: pushed %.2f m away, back within 10 cm after %s\n",
-                  p.label.c_str(), p.force.norm(), p.release - p.start, p.max_deviation,
-                  format("%.2f s", p.return_time).c_str());
+  return text + format(" for %.2f s", d.duration);
+}
+
+void writeSetpoints(const FlightReport& r, std::ostream& out) {
+  if (r.setpoints.empty()) return;
+  char line[512];
+  const std::string settle = "settle (<" + formatQuantity(r.settle_error, "m") + ")";
+  std::snprintf(line, sizeof line, "  setpoint            size    %-14s  overshoot  steady error\n", settle.c_str());
+  out << line;
+  for (const SetpointWindow& w : r.setpoints) {
+    std::snprintf(line, sizeof line, "  %-18s %5.2f m  %-14s  %7s  %s\n", w.label.c_str(), w.size,
+                  format("%.2f s", w.settle_time).c_str(), w.is_jump ? format("%.1f %%", 100.0 * w.overshoot).c_str() : "-",
+                  format("%.1f cm", 100.0 * w.steady_error).c_str());
     out << line;
   }
+}
+
+void writePulls(const FlightReport& r, std::ostream& out) {
+  char line[512];
+  for (const PullWindow& p : r.pulls) {
+    std::snprintf(line, sizeof line, "  %-18s %s: pushed %.2f m away, back within %s after %s\n", p.label.c_str(),
+                  describeDisturbance(p.disturbance).c_str(), p.max_deviation,
+                  formatQuantity(r.return_error, "m").c_str(), format("%.2f s", p.return_time).c_str());
+    out << line;
+  }
+}
+
+void writeTrajectories(const FlightReport& r, std::ostream& out) {
+  char line[512];
   for (const PathTrackingReport& t : r.trajectories) {
     std::snprintf(line, sizeof line, "  %s (%s, %s, %d samples, %.2f m per lap): %s, %.2f laps\n", t.label.c_str(),
                   t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial", t.closed ? "closed" : "open",
@@ -239,6 +313,10 @@ void writeSummary(const FlightReport& r, std::ostream& out) {
       out << line;
     }
   }
+}
+
+void writeMeasurements(const FlightReport& r, std::ostream& out) {
+  char line[512];
   std::snprintf(line, sizeof line, "  estimator (hover): position %s RMS, attitude %s RMS (whole flight %s, %s)\n",
                 format("%.2f cm", 100.0 * r.estimator.position_rms).c_str(),
                 format("%.2f deg", r.estimator.attitude_rms_deg).c_str(),
@@ -254,7 +332,7 @@ void writeSummary(const FlightReport& r, std::ostream& out) {
   std::snprintf(line, sizeof line, "  controller period (sim time): median %.2f ms, |jitter| p99 %.2f ms\n",
                 r.rate_cmd_period_ms.median, r.rate_cmd_jitter_ms.p99);
   out << line;
-  if (r.state_to_command_us.count > 0) {
+  if (r.state_to_command_us.count > 0 && !r.processes.empty()) {
     std::snprintf(line, sizeof line, "  STATE_EST -> RATE_CMD at the recorder: median %.0f us, p99 %.0f us\n",
                   r.state_to_command_us.median, r.state_to_command_us.p99);
     out << line;
@@ -268,14 +346,54 @@ void writeSummary(const FlightReport& r, std::ostream& out) {
     std::snprintf(line, sizeof line, "; flight stack %.1f\n", r.stack_cpu_percent);
     out << line;
   }
+  if (r.calibration) {
+    const calibrate::Calibration& c = *r.calibration;
+    std::snprintf(line, sizeof line,
+                  "  this machine (1 kHz ping/pong before the flight): round trip median %.0f us, p99 %.0f us, CPU "
+                  "%.1f %%; the flight stack used %.2fx that CPU, its latency median was %.2fx the one-way median\n",
+                  c.rtt_median_us, c.rtt_p99_us, c.cpu_percent, r.stack_cpu_relative, r.state_to_command_relative);
+    out << line;
+  }
   std::snprintf(line, sizeof line, "  max tilt %.1f deg, touchdown %.2f m/s%s, non-finite messages %lld\n", r.max_tilt_deg,
                 r.touchdown_speed, r.crashed ? ", CRASHED" : "", static_cast<long long>(r.nonfinite));
   out << line;
+}
+
+std::string formatLimit(const Check& c) {
+  return std::string(c.upper ? "<= " : ">= ") + formatQuantity(c.limit, c.unit);
+}
+
+// One line per check: verdict, what is judged, the window, the value and the limit.
+void writeCheckTable(const FlightReport& r, std::ostream& out) {
+  size_t width = 10;
+  for (const Check& c : r.checks) width = std::max(width, c.description.size());
+  out << "  checks:\n";
+  char line[768];
   for (const Check& c : r.checks) {
-    if (c.pass) continue;
-    std::snprintf(line, sizeof line, "  FAILED %s: %.4g (limit %s %.4g)\n", c.name.c_str(), c.value,
-                  c.upper ? "<=" : ">=", c.limit);
+    std::snprintf(line, sizeof line, "    %-4s %-*s  %-14s %10s  %s\n", c.pass ? "ok" : "FAIL", static_cast<int>(width),
+                  c.description.c_str(), c.window.c_str(), formatQuantity(c.value, c.unit).c_str(),
+                  formatLimit(c).c_str());
     out << line;
+  }
+  for (const NotJudged& n : r.not_judged) out << "    --   " << n.key << " not judged: " << n.reason << "\n";
+}
+
+}  // namespace
+
+void writeSummary(const FlightReport& r, std::ostream& out) {
+  int passed = 0;
+  for (const Check& c : r.checks) passed += c.pass ? 1 : 0;
+  char line[512];
+  std::snprintf(line, sizeof line, "scenario %s: %s (%d of %zu checks pass)\n", r.scenario.c_str(),
+                r.passed() ? "PASS" : "FAIL", passed, r.checks.size());
+  out << line;
+  writeSetpoints(r, out);
+  writePulls(r, out);
+  writeTrajectories(r, out);
+  writeMeasurements(r, out);
+  writeCheckTable(r, out);
+  for (const Check& c : r.checks) {
+    if (!c.pass) out << "  FAILED " << c.name << ": " << formatQuantity(c.value, c.unit) << " (limit " << formatLimit(c) << ")\n";
   }
 }
 

@@ -38,6 +38,16 @@ int64_t firstFailsafeAfter(const logger::FlightLog& log, int64_t utime) {
 
 double seconds(int64_t us) { return static_cast<double>(us) * 1e-6; }
 
+// Recorder receive time of the first HEARTBEAT of `process` at or after `wall_utime`, or -1.
+int64_t firstHeartbeatAtOrAfter(const logger::FlightLog& log, const std::string& process, int64_t wall_utime) {
+  for (size_t i = 0; i < log.heartbeat.size(); ++i) {
+    if (log.heartbeat[i].process == process && log.heartbeat.receive_utime[i] >= wall_utime) {
+      return log.heartbeat.receive_utime[i];
+    }
+  }
+  return -1;
+}
+
 }  // namespace
 
 int64_t simTimeAtWall(const logger::FlightLog& log, int64_t wall_utime) {
@@ -52,6 +62,11 @@ GainsOutage measureGainsOutage(const logger::FlightLog& log, int64_t kill_wall, 
   if (last >= 0) out.last_gains_utime = log.gains[static_cast<size_t>(last)].utime;
   const std::ptrdiff_t resumed = firstReceivedAtOrAfter(log.gains, restart_wall);
   if (resumed >= 0) out.resume_delay_s = seconds(log.gains.receive_utime[static_cast<size_t>(resumed)] - restart_wall);
+  const int64_t up_wall = firstHeartbeatAtOrAfter(log, "sdlqr-gains", restart_wall);
+  const int64_t up_utime = up_wall < 0 ? -1 : simTimeAtWall(log, up_wall);
+  if (resumed >= 0 && up_utime >= 0) {
+    out.resume_after_up_s = seconds(log.gains[static_cast<size_t>(resumed)].utime - up_utime);
+  }
   // One controller tick of slack past the timeout: the tick that crosses it may still use the K.
   const int64_t timeout_utime = out.last_gains_utime + static_cast<int64_t>((fallback_timeout_s + 0.01) * 1e6);
   for (size_t i = 0; i < log.rate_command.size(); ++i) {

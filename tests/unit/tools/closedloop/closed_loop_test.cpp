@@ -1,6 +1,6 @@
-// The flight libraries stepped together without a bus (DESIGN §8), flying the paper's hover
-// experiment (§III-C.1): the same checks as the bus test, deterministic and much faster than
-// real time.
+// The flight libraries stepped together without a bus, flying the paper's hover experiment
+// (§III-C.1): the same checks as the bus test, deterministic and much faster than real time (the
+// speed is printed here and measured in bench/; machine speed does not decide a test).
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,6 @@
 #include <chrono>
 #include <iostream>
 
-#include "sanitized_build.hpp"
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/closedloop/closed_loop.hpp"
 
@@ -38,7 +37,7 @@ Flight fly(const std::string& scenario_file) {
   return flight;
 }
 
-TEST(ClosedLoop, HoverJumpsPassEveryCriterionFasterThanRealTime) {
+TEST(ClosedLoop, HoverJumpsPassEveryCriterion) {
   const Flight flight = fly("hover_jumps.yaml");
   analysis::writeSummary(flight.report, std::cout);
   const double speedup = flight.sim_seconds / flight.wall_seconds;
@@ -49,9 +48,6 @@ TEST(ClosedLoop, HoverJumpsPassEveryCriterionFasterThanRealTime) {
   }
   EXPECT_EQ(flight.report.setpoints.size(), 7u);  // take-off hold + six jumps
   EXPECT_EQ(flight.report.pulls.size(), 1u);
-  if (!sdlqr::testing::kSanitizedBuild) {  // instrumented code is several times slower
-    EXPECT_GE(speedup, 50.0);
-  }
 }
 
 TEST(ClosedLoop, SameScenarioAndSeedFlyTheSameFlightBitForBit) {

@@ -62,13 +62,27 @@ TEST(OutageCheck, GainsOutageFindsTheHoverKAfterTheTimeoutAndTheResume) {
     }
     add(log.rate_command, command, t);
   }
+  for (int i = 0; i <= 200; ++i) add(log.sim_truth, truthAt(Vec3(0, 0, 1)), 0.1 * i);
+  // The restarted solver's first HEARTBEAT at 15.2 s (it took 0.2 s to start), GAINS 0.1 s later.
+  logger::HeartbeatRecord up;
+  up.process = "sdlqr-gains";
+  add(log.heartbeat, up, 15.2);
   const GainsOutage g = measureGainsOutage(log, wall(5.05), wall(15.0), 1.0);
+  EXPECT_NEAR(g.resume_after_up_s, 0.1, 1e-6);
   EXPECT_EQ(g.last_gains_utime, us(5.0));
   EXPECT_EQ(g.first_fallback_utime, us(6.01));
   EXPECT_NEAR(g.resume_delay_s, 0.3, 1e-6);
   EXPECT_EQ(g.fallback_commands, 899);  // 6.01 .. 14.99 s
   EXPECT_EQ(g.late_non_fallback_commands, 0);
   EXPECT_GT(g.fresh_commands_after_resume, 400);
+
+  // A solver that is up but does not solve for a second is caught in simulation time, whatever
+  // its start-up took.
+  logger::FlightLog slow = log;
+  slow.heartbeat.messages.clear();
+  slow.heartbeat.receive_utime.clear();
+  add(slow.heartbeat, up, 14.3);
+  EXPECT_NEAR(measureGainsOutage(slow, wall(5.05), wall(14.0), 1.0).resume_after_up_s, 1.0, 1e-6);
 
   // A controller that never falls back is caught.
   logger::FlightLog stuck = log;

@@ -7,11 +7,13 @@
 // Positions are judged on SIM_TRUTH (where the vehicle really was), not on the estimate.
 
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "sdlqr/analysis/path_tracking.hpp"
+#include "sdlqr/calibrate/calibration.hpp"
 #include "sdlqr/math/types.hpp"
 #include "sdlqr/logger/flight_log.hpp"
 #include "sdlqr/logger/statistics.hpp"
@@ -36,12 +38,13 @@ struct SetpointWindow {
   double max_error_after_settle = kNotReached;  // [m]
 };
 
+// A disturbance while holding a setpoint: a force or torque kick, or a spring holding the vehicle.
 struct PullWindow {
   std::string label;
   double start = 0.0;             // [s] disturbance start
   double release = 0.0;           // [s] disturbance end
   double end = 0.0;               // [s] next event
-  Vec3 force = Vec3::Zero();      // [N] world
+  Disturbance disturbance;        // as the mission sent it (force, torque, hold)
   Vec3 setpoint = Vec3::Zero();   // [m]
   double max_deviation = 0.0;     // [m]
   double return_time = kNotReached;  // [s] after release, error stays below the return threshold
@@ -67,11 +70,22 @@ struct ProcessLoad {
 };
 
 struct Check {
-  std::string name;      // criterion key, with the window label when per window
+  std::string name;         // criterion key, with the window label when per window: "key[label]"
+  std::string key;          // criterion key (criteria.hpp)
+  std::string window;       // label of the window judged, empty for the whole flight
+  std::string description;  // what is judged, with the scenario's thresholds filled in
+  std::string unit;
   double value = 0.0;
   double limit = 0.0;
   bool upper = true;     // pass when value <= limit (else value >= limit)
   bool pass = false;
+};
+
+// A criterion of the scenario that this report cannot judge, and why (no calibration of the
+// machine given, an in-process flight without heartbeats).
+struct NotJudged {
+  std::string key;
+  std::string reason;
 };
 
 struct FlightReport {
@@ -79,7 +93,9 @@ struct FlightReport {
   double flight_start = kNotReached;  // [s] first airborne truth sample
   double flight_end = kNotReached;
   std::vector<SetpointWindow> setpoints;
+  double settle_error = kNotReached;  // [m] the error a jump settles below (jump_settle_error)
   std::vector<PullWindow> pulls;
+  double return_error = kNotReached;  // [m] back after a pull within this (pull_return_error)
   std::vector<PathTrackingReport> trajectories;  // one per tracked TRAJECTORY upload
   EstimatorAccuracy estimator;
   double imu_rate_hz = 0.0;        // by simulation time
@@ -93,11 +109,17 @@ struct FlightReport {
   logger::Distribution state_to_command_us;      // STATE_EST -> RATE_CMD, recorder receive clock
   std::vector<ProcessLoad> processes;
   double stack_cpu_percent = 0.0;  // sum of the flight processes' means
+  // The machine's own figures measured just before the flight (sdlqr-calibrate), when given;
+  // the relative figures divide the flight's by them.
+  std::optional<calibrate::Calibration> calibration;
+  double stack_cpu_relative = kNotReached;        // stack_cpu_percent / calibration cpu_percent
+  double state_to_command_relative = kNotReached;  // median latency / calibration one-way median
   int64_t nonfinite = 0;           // messages with NaN/Inf among estimates, commands, gains
   double max_tilt_deg = 0.0;
   double touchdown_speed = 0.0;    // [m/s] fastest vertical speed at a ground contact
   bool crashed = false;
   std::vector<Check> checks;
+  std::vector<NotJudged> not_judged;
 
   bool passed() const;
 };
@@ -111,6 +133,8 @@ struct AnalysisOptions {
   // same names (return_error: path_return_error); thrust limits come from the vehicle's lqr:
   // section and are required by the criterion thrust_limit_violations_max.
   PathTrackingOptions path;
+  // This machine's figures, measured just before the flight: needed by the relative budgets.
+  std::optional<calibrate::Calibration> calibration;
 };
 
 // Throws std::invalid_argument for a criterion key it does not know (a typo would otherwise pass).

@@ -5,6 +5,7 @@
 // everything else is simulation time.
 
 #include <cstdint>
+#include <limits>
 
 #include "sdlqr/logger/flight_log.hpp"
 
@@ -20,7 +21,12 @@ struct GainsOutage {
   // RATE_CMD stamped later than last GAINS + timeout (+ one tick), received before the restart,
   // that were NOT on the hover K: must be 0.
   int64_t late_non_fallback_commands = 0;
-  double resume_delay_s = -1.0;      // [s] wall: restart -> first GAINS received
+  double resume_delay_s = -1.0;      // [s] wall: restart -> first GAINS received (reported only)
+  // [s] sim: the restarted solver's first HEARTBEAT -> the estimate time of its first GAINS (NaN:
+  // none). Machine speed drops out: how long the process takes to start is not counted, only
+  // whether it then solves at once (slightly negative when it solved on an estimate that was
+  // already on its way when its first heartbeat went out).
+  double resume_after_up_s = std::numeric_limits<double>::quiet_NaN();
   int64_t fresh_commands_after_resume = 0;  // RATE_CMD back on fresh GAINS after the restart
 };
 GainsOutage measureGainsOutage(const logger::FlightLog& log, int64_t kill_wall, int64_t restart_wall,

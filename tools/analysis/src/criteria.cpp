@@ -1,0 +1,295 @@
+#include "sdlqr/analysis/criteria.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace sdlqr::analysis {
+
+namespace {
+
+using S = Scope;
+using B = Bound;
+
+CriterionSpec flight(std::string_view key, B bound, std::string_view unit, std::string_view description,
+                     double (*of)(const FlightReport&)) {
+  CriterionSpec c;
+  c.key = key;
+  c.bound = bound;
+  c.unit = unit;
+  c.description = description;
+  c.scope = S::kFlight;
+  c.of_flight = of;
+  return c;
+}
+
+CriterionSpec relative(CriterionSpec c) {
+  c.needs_calibration = true;
+  c.needs_heartbeats = true;
+  return c;
+}
+
+CriterionSpec setpoint(std::string_view key, S scope, std::string_view unit, std::string_view description,
+                       double (*of)(const SetpointWindow&)) {
+  CriterionSpec c;
+  c.key = key;
+  c.unit = unit;
+  c.description = description;
+  c.scope = scope;
+  c.of_setpoint = of;
+  return c;
+}
+
+CriterionSpec trajectory(std::string_view key, B bound, std::string_view unit, std::string_view description,
+                         double (*of)(const PathTrackingReport&)) {
+  CriterionSpec c;
+  c.key = key;
+  c.bound = bound;
+  c.unit = unit;
+  c.description = description;
+  c.scope = S::kTrajectory;
+  c.of_trajectory = of;
+  return c;
+}
+
+std::vector<CriterionSpec> makeCriteria() {
+  std::vector<CriterionSpec> c;
+  // Every flight.
+  c.push_back(flight("nonfinite_messages", B::kAtMost, "count", "messages with NaN or Inf (estimates, commands, gains)",
+                     [](const FlightReport& r) { return static_cast<double>(r.nonfinite); }));
+  c.push_back(flight("crashed", B::kAtMost, "-", "vehicle crashed (1) or not (0)",
+                     [](const FlightReport& r) { return r.crashed ? 1.0 : 0.0; }));
+  // Setpoints and jumps (Fig. 5).
+  c.push_back(setpoint("jump_settle_time", S::kJump, "s", "settle time: error below {jump_settle_error} and staying",
+                       [](const SetpointWindow& w) { return w.settle_time; }));
+  c.push_back(setpoint("jump_max_overshoot", S::kJump, "-", "overshoot along the jump, fraction of its size",
+                       [](const SetpointWindow& w) { return w.overshoot; }));
+  c.push_back(setpoint("hover_error", S::kSetpoint, "m", "steady error, mean over the window's last {hover_window}",
+                       [](const SetpointWindow& w) { return w.steady_error; }));
+  // Pulls while holding a setpoint (Fig. 4).
+  CriterionSpec pull;
+  pull.key = "pull_return_time";
+  pull.unit = "s";
+  pull.description = "after release, back within {pull_return_error} of the setpoint and staying";
+  pull.scope = S::kPull;
+  pull.of_pull = [](const PullWindow& p) { return p.return_time; };
+  c.push_back(pull);
+  // Estimator and rates (simulation time).
+  c.push_back(flight("estimator_position_rms", B::kAtMost, "m", "estimator position error RMS in hover",
+                     [](const FlightReport& r) { return r.estimator.position_rms; }));
+  c.push_back(flight("estimator_attitude_rms_deg", B::kAtMost, "deg", "estimator attitude error RMS in hover",
+                     [](const FlightReport& r) { return r.estimator.attitude_rms_deg; }));
+  c.push_back(flight("gains_rate_min", B::kAtLeast, "Hz", "GAINS rate, simulation time",
+                     [](const FlightReport& r) { return r.gains_rate_hz; }));
+  c.push_back(flight("gains_rate_max", B::kAtMost, "Hz", "GAINS rate, simulation time",
+                     [](const FlightReport& r) { return r.gains_rate_hz; }));
+  c.push_back(flight("rate_cmd_rate_min", B::kAtLeast, "Hz", "RATE_CMD rate, simulation time",
+                     [](const FlightReport& r) { return r.rate_cmd_rate_hz; }));
+  c.push_back(flight("rate_cmd_rate_max", B::kAtMost, "Hz", "RATE_CMD rate, simulation time",
+                     [](const FlightReport& r) { return r.rate_cmd_rate_hz; }));
+  c.push_back(flight("state_est_rate_min", B::kAtLeast, "Hz", "STATE_EST rate, simulation time",
+                     [](const FlightReport& r) { return r.state_est_rate_hz; }));
+  c.push_back(flight("state_est_rate_max", B::kAtMost, "Hz", "STATE_EST rate, simulation time",
+                     [](const FlightReport& r) { return r.state_est_rate_hz; }));
+  c.push_back(flight("max_tilt_deg", B::kAtMost, "deg", "largest tilt while airborne",
+                     [](const FlightReport& r) { return r.max_tilt_deg; }));
+  c.push_back(flight("touchdown_speed_max", B::kAtMost, "m/s", "fastest vertical speed at a ground contact",
+                     [](const FlightReport& r) { return r.touchdown_speed; }));
+  c.push_back(flight("rate_cmd_jitter_p99_ms", B::kAtMost, "ms", "controller period |jitter| p99, simulation time",
+                     [](const FlightReport& r) { return r.rate_cmd_jitter_ms.p99; }));
+  // Machine-dependent figures, judged only against this machine's calibration.
+  c.push_back(relative(flight("stack_cpu_relative_max", B::kAtMost, "-",
+                              "flight-stack CPU over the CPU of a 1 kHz ping/pong on this bus (calibration)",
+                              [](const FlightReport& r) { return r.stack_cpu_relative; })));
+  c.push_back(relative(flight("state_to_command_latency_relative_max", B::kAtMost, "-",
+                              "STATE_EST -> RATE_CMD latency median over the one-way median of the calibration",
+                              [](const FlightReport& r) { return r.state_to_command_relative; })));
+  // Trajectories (path_tracking.hpp).
+  c.push_back(trajectory("path_error_rms", B::kAtMost, "m", "distance to the path, RMS",
+                         [](const PathTrackingReport& t) { return t.path_error_rms; }));
+  c.push_back(trajectory("path_error_max", B::kAtMost, "m", "distance to the path, max",
+                         [](const PathTrackingReport& t) { return t.path_error_max; }));
+  c.push_back(trajectory("skipped_samples_max", B::kAtMost, "count", "samples skipped (never within {skip_radius})",
+                         [](const PathTrackingReport& t) { return static_cast<double>(t.skipped.size()); }));
+  c.push_back(trajectory("skipped_samples_min", B::kAtLeast, "count", "samples skipped (never within {skip_radius})",
+                         [](const PathTrackingReport& t) { return static_cast<double>(t.skipped.size()); }));
+  c.push_back(trajectory("trajectory_laps_min", B::kAtLeast, "-", "laps flown",
+                         [](const PathTrackingReport& t) { return t.laps; }));
+  c.push_back(trajectory("trajectory_completed", B::kAtLeast, "-", "reference reached the end of the trajectory (1)",
+                         [](const PathTrackingReport& t) { return t.completed ? 1.0 : 0.0; }));
+  c.push_back(trajectory("thrust_limit_violations_max", B::kAtMost, "count",
+                         "commanded thrusts outside the vehicle's [c_min, c_max]",
+                         [](const PathTrackingReport& t) { return static_cast<double>(t.thrust_violations); }));
+  CriterionSpec path_return;
+  path_return.key = "path_return_time";
+  path_return.unit = "s";
+  path_return.description = "after release, back within {path_return_error} of the path and staying";
+  path_return.scope = S::kTrajectoryPull;
+  path_return.of_trajectory_pull = [](const PathPull& p) { return p.return_time; };
+  c.push_back(path_return);
+  return c;
+}
+
+double thresholdDefault(std::string_view key, const AnalysisOptions& options) {
+  if (key == "jump_settle_error") return options.settle_error;
+  if (key == "pull_return_error") return options.return_error;
+  if (key == "skip_radius") return options.path.skip_radius;
+  if (key == "skip_window") return options.path.skip_window;
+  if (key == "path_return_error") return options.path.return_error;
+  if (key == "hover_window") return options.hover_window;
+  return kNotReached;
+}
+
+std::string_view thresholdUnit(std::string_view key) {
+  if (key == "hover_window") return "s";
+  const ThresholdSpec* t = findThreshold(key);
+  return t ? t->unit : "";
+}
+
+std::string formatNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", value);
+  return text;
+}
+
+Check makeCheck(const CriterionSpec& spec, const std::string& window, const std::string& description, double value,
+                double limit) {
+  Check check;
+  check.key = std::string(spec.key);
+  check.window = window;
+  check.name = window.empty() ? check.key : check.key + "[" + window + "]";
+  check.description = description;
+  check.unit = std::string(spec.unit);
+  check.value = value;
+  check.limit = limit;
+  check.upper = spec.bound == Bound::kAtMost;
+  check.pass = std::isfinite(value) && (check.upper ? value <= limit : value >= limit);
+  return check;
+}
+
+std::string notJudgedReason(const CriterionSpec& spec, const FlightReport& report) {
+  if (spec.needs_heartbeats && report.processes.empty()) return "no process heartbeats (an in-process flight)";
+  if (spec.needs_calibration && !report.calibration) {
+    return "no calibration of this machine (sdlqr-analyze --calibration FILE from sdlqr-calibrate)";
+  }
+  return {};
+}
+
+// Appends the checks of one criterion, one per window of its scope.
+void judgeOne(const CriterionSpec& spec, double limit, const std::string& description, FlightReport& report) {
+  auto add = [&](const std::string& window, double value) {
+    report.checks.push_back(makeCheck(spec, window, description, value, limit));
+  };
+  switch (spec.scope) {
+    case S::kFlight:
+      add("", spec.of_flight(report));
+      break;
+    case S::kJump:
+    case S::kSetpoint:
+      for (const SetpointWindow& w : report.setpoints) {
+        if (spec.scope == S::kSetpoint || w.is_jump) add(w.label, spec.of_setpoint(w));
+      }
+      break;
+    case S::kPull:
+      for (const PullWindow& p : report.pulls) add(p.label, spec.of_pull(p));
+      break;
+    case S::kTrajectory:
+      for (const PathTrackingReport& t : report.trajectories) add(t.label, spec.of_trajectory(t));
+      break;
+    case S::kTrajectoryPull:
+      for (const PathTrackingReport& t : report.trajectories) {
+        if (t.pulls.empty()) add(t.label + "][no pull", kNotReached);
+        for (size_t i = 0; i < t.pulls.size(); ++i) {
+          add(t.label + "][pull " + std::to_string(i + 1), spec.of_trajectory_pull(t.pulls[i]));
+        }
+      }
+      break;
+  }
+}
+
+}  // namespace
+
+const std::vector<CriterionSpec>& criteria() {
+  static const std::vector<CriterionSpec> table = makeCriteria();
+  return table;
+}
+
+const std::vector<ThresholdSpec>& thresholds() {
+  static const std::vector<ThresholdSpec> table = {
+      {"jump_settle_error", "m", "error a jump must settle below (jump_settle_time)"},
+      {"pull_return_error", "m", "distance to the setpoint counted as back after a pull (pull_return_time)"},
+      {"skip_radius", "m", "a trajectory sample the vehicle came this close to was visited"},
+      {"skip_window", "m", "path either side of a sample within which a visit counts"},
+      {"path_return_error", "m", "distance to the path counted as back on it after a pull (path_return_time)"},
+  };
+  return table;
+}
+
+const CriterionSpec* findCriterion(std::string_view key) {
+  for (const CriterionSpec& c : criteria()) {
+    if (c.key == key) return &c;
+  }
+  return nullptr;
+}
+
+const ThresholdSpec* findThreshold(std::string_view key) {
+  for (const ThresholdSpec& t : thresholds()) {
+    if (t.key == key) return &t;
+  }
+  return nullptr;
+}
+
+std::string formatQuantity(double value, std::string_view unit) {
+  if (!std::isfinite(value)) return "n/a";
+  if (unit == "m" && std::abs(value) < 1.0) return formatNumber(value * 100.0) + " cm";
+  if (unit == "-" || unit == "count" || unit.empty()) return formatNumber(value);
+  return formatNumber(value) + " " + std::string(unit);
+}
+
+std::string describe(const CriterionSpec& spec, const mission::Scenario& scenario, const AnalysisOptions& options) {
+  std::string text(spec.description);
+  for (size_t open = text.find('{'); open != std::string::npos; open = text.find('{', open)) {
+    const size_t close = text.find('}', open);
+    if (close == std::string::npos) break;
+    const std::string key = text.substr(open + 1, close - open - 1);
+    const double value = scenario.criterion(key, thresholdDefault(key, options));
+    const std::string quantity = formatQuantity(value, thresholdUnit(key));
+    text.replace(open, close - open + 1, quantity);
+    open += quantity.size();
+  }
+  return text;
+}
+
+void checkCriteriaKeys(const mission::Scenario& scenario) {
+  for (const auto& [key, value] : scenario.criteria) {
+    if (!findCriterion(key) && !findThreshold(key)) {
+      throw std::invalid_argument("criteria." + key + ": unknown criterion (see tools/analysis/src/criteria.cpp)");
+    }
+  }
+}
+
+void judgeCriteria(FlightReport& report, const mission::Scenario& scenario, const AnalysisOptions& options) {
+  bool judges_trajectories = false;
+  for (const CriterionSpec& spec : criteria()) {
+    const bool always = spec.key == "nonfinite_messages" || spec.key == "crashed";
+    const auto it = scenario.criteria.find(std::string(spec.key));
+    if (!always && it == scenario.criteria.end()) continue;
+    const std::string reason = notJudgedReason(spec, report);
+    if (!reason.empty()) {
+      report.not_judged.push_back({std::string(spec.key), reason});
+      continue;
+    }
+    judges_trajectories |= spec.scope == S::kTrajectory || spec.scope == S::kTrajectoryPull;
+    judgeOne(spec, always ? 0.0 : it->second, describe(spec, scenario, options), report);
+  }
+  // Trajectory criteria and nothing tracked: the flight did not do what the scenario asked.
+  if (judges_trajectories && report.trajectories.empty()) {
+    CriterionSpec tracked;
+    tracked.key = "trajectories_tracked";
+    tracked.bound = Bound::kAtLeast;
+    tracked.unit = "count";
+    report.checks.push_back(makeCheck(tracked, "", "trajectories the controller tracked", 0.0, 1.0));
+  }
+}
+
+}  // namespace sdlqr::analysis

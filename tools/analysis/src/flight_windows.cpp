@@ -1,0 +1,182 @@
+// Setpoint windows (take-off hold, reference jumps: Fig. 5) and pulls (Fig. 4) of a flight.
+
+#include <cmath>
+#include <set>
+
+#include "flight_parts.hpp"
+
+namespace sdlqr::analysis::detail {
+
+namespace {
+
+struct Event {
+  double t = 0.0;
+  enum Kind { kTakeoff, kGoto, kLand, kPull, kTrajectory } kind = kGoto;
+  Vec3 position = Vec3::Zero();
+  const Disturbance* disturbance = nullptr;
+  std::string label;
+};
+
+std::vector<Event> commandEvents(const logger::FlightLog& log) {
+  std::vector<Event> events;
+  std::set<int64_t> command_seqs;
+  for (const Command& c : log.command.messages) {
+    // sdlqr-mission re-sends its current command once a second (same seq) for a restarted
+    // controller: one event per command.
+    if (!command_seqs.insert(c.seq).second) continue;
+    Event e;
+    e.t = seconds(c.utime);
+    e.position = c.position;
+    if (c.command == CommandType::kTakeoff) e.kind = Event::kTakeoff;
+    else if (c.command == CommandType::kGoto) e.kind = Event::kGoto;
+    else if (c.command == CommandType::kLand) e.kind = Event::kLand;
+    else continue;
+    events.push_back(e);
+  }
+  return events;
+}
+
+// Labels come from the scenario: its events of the same kind, in the same order.
+void labelFromScenario(std::vector<Event>& events, const mission::Scenario& scenario) {
+  std::vector<const mission::ScenarioEvent*> commands, pulls;
+  for (const mission::ScenarioEvent& s : scenario.events) {
+    if (s.kind == mission::ScenarioEvent::Kind::kCommand &&
+        (s.command.command == CommandType::kGoto || s.command.command == CommandType::kTakeoff ||
+         s.command.command == CommandType::kLand)) {
+      commands.push_back(&s);
+    } else if (s.kind == mission::ScenarioEvent::Kind::kDisturbance) {
+      pulls.push_back(&s);
+    }
+  }
+  size_t next_command = 0, next_pull = 0;
+  for (Event& e : events) {
+    if (e.kind == Event::kTrajectory) continue;
+    std::vector<const mission::ScenarioEvent*>& source_list = e.kind == Event::kPull ? pulls : commands;
+    size_t& next = e.kind == Event::kPull ? next_pull : next_command;
+    const mission::ScenarioEvent* source = next < source_list.size() ? source_list[next++] : nullptr;
+    if (source && !source->label.empty()) e.label = source->label;
+    if (e.label.empty()) {
+      static const char* names[] = {"takeoff", "goto", "land", "pull"};
+      e.label = names[e.kind];
+    }
+  }
+}
+
+std::vector<Event> flightEvents(const logger::FlightLog& log, const mission::Scenario& scenario) {
+  std::vector<Event> events = commandEvents(log);
+  for (const Disturbance& d : log.disturbance.messages) {
+    Event e;
+    e.t = seconds(d.start_utime > 0 ? d.start_utime : d.utime);
+    e.kind = Event::kPull;
+    e.disturbance = &d;
+    events.push_back(e);
+  }
+  // A trajectory ends the setpoint window before it (path_tracking.hpp judges the flight on it).
+  for (const Trajectory& t : log.trajectory.messages) {
+    Event e;
+    e.t = seconds(t.start_utime > 0 ? t.start_utime : t.utime);
+    e.kind = Event::kTrajectory;
+    e.label = "trajectory";
+    events.push_back(e);
+  }
+  std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.t < b.t; });
+  labelFromScenario(events, scenario);
+  return events;
+}
+
+// Held reference position shortly before `t` (the controller publishes it every tick).
+Vec3 referencePositionBefore(const logger::FlightLog& log, double t) {
+  const auto i = log.reference.indexAtOrBefore(static_cast<int64_t>(t * 1e6) - 20000);
+  if (i < 0) return Vec3::Constant(kNotReached);
+  return position(log.reference[static_cast<size_t>(i)].x);
+}
+
+// Time after `from` at which err stays below `threshold` until `end`; NaN if it ends above.
+template <class ErrorOf>
+double settleTime(const logger::FlightLog& log, double from, double end, double threshold, ErrorOf error_of) {
+  double last_above = -1.0;
+  double last_t = from;
+  bool any = false;
+  forTruthIn(log, from, end, [&](const SimTruth& s) {
+    any = true;
+    last_t = seconds(s.utime);
+    if (error_of(s) >= threshold) last_above = last_t;
+  });
+  if (!any || last_above >= last_t) return kNotReached;
+  return last_above < 0.0 ? 0.0 : last_above - from;
+}
+
+SetpointWindow setpointWindow(const logger::FlightLog& log, const Event& e, double end, const Vec3& previous,
+                              double settle_error, double hover_window) {
+  SetpointWindow w;
+  w.label = e.label;
+  w.is_jump = e.kind == Event::kGoto;
+  w.start = e.t;
+  w.end = end;
+  w.to = e.kind == Event::kGoto ? e.position : referencePositionBefore(log, end);
+  w.from = previous.allFinite() ? previous : w.to;
+  w.size = (w.to - w.from).norm();
+  const Vec3 to = w.to;
+  const auto error_of = [&to](const SimTruth& s) { return (s.position - to).norm(); };
+  w.settle_time = settleTime(log, w.start, w.end, settle_error, error_of);
+  const Vec3 direction = w.size > 1e-9 ? Vec3((w.to - w.from) / w.size) : Vec3::Zero();
+  double beyond = 0.0, steady_sum = 0.0, after_settle = 0.0;
+  int64_t steady_count = 0;
+  const double settled_at = w.start + (std::isfinite(w.settle_time) ? w.settle_time : 1e9);
+  forTruthIn(log, w.start, w.end, [&](const SimTruth& s) {
+    const double t = seconds(s.utime);
+    beyond = std::max(beyond, (s.position - to).dot(direction));
+    if (t >= w.end - hover_window) {
+      steady_sum += error_of(s);
+      ++steady_count;
+    }
+    if (t >= settled_at) after_settle = std::max(after_settle, error_of(s));
+  });
+  w.overshoot = w.size > 1e-9 ? beyond / w.size : 0.0;
+  if (steady_count > 0) w.steady_error = steady_sum / static_cast<double>(steady_count);
+  if (std::isfinite(w.settle_time)) w.max_error_after_settle = after_settle;
+  return w;
+}
+
+PullWindow pullWindow(const logger::FlightLog& log, const Event& e, double end, double return_error) {
+  PullWindow p;
+  p.label = e.label;
+  p.start = e.t;
+  p.release = e.t + e.disturbance->duration;
+  p.end = end;
+  p.disturbance = *e.disturbance;
+  p.setpoint = referencePositionBefore(log, e.t + 0.02);
+  const Vec3 sp = p.setpoint;
+  const auto error_of = [&sp](const SimTruth& s) { return (s.position - sp).norm(); };
+  forTruthIn(log, p.start, p.end, [&](const SimTruth& s) { p.max_deviation = std::max(p.max_deviation, error_of(s)); });
+  p.return_time = settleTime(log, p.release, p.end, return_error, error_of);
+  return p;
+}
+
+}  // namespace
+
+void analyzeWindows(const logger::FlightLog& log, const mission::Scenario& scenario, const AnalysisOptions& options,
+                    FlightReport& report) {
+  const double log_end = log.sim_truth.empty() ? 0.0 : seconds(log.sim_truth.back().utime);
+  const std::vector<Event> events = flightEvents(log, scenario);
+  const double settle_error = scenario.criterion("jump_settle_error", options.settle_error);
+  const double return_error = scenario.criterion("pull_return_error", options.return_error);
+  report.settle_error = settle_error;
+  report.return_error = return_error;
+  Vec3 previous_setpoint = Vec3::Constant(kNotReached);
+  bool on_trajectory = false;  // pulls while tracking a trajectory are judged against the path
+  for (size_t i = 0; i < events.size(); ++i) {
+    const Event& e = events[i];
+    if (e.kind != Event::kPull) on_trajectory = e.kind == Event::kTrajectory;
+    if (on_trajectory) previous_setpoint = Vec3::Constant(kNotReached);
+    const double end = i + 1 < events.size() ? events[i + 1].t : log_end;
+    if (e.kind == Event::kTakeoff || e.kind == Event::kGoto) {
+      report.setpoints.push_back(setpointWindow(log, e, end, previous_setpoint, settle_error, options.hover_window));
+      previous_setpoint = report.setpoints.back().to;
+    } else if (e.kind == Event::kPull && !on_trajectory) {
+      report.pulls.push_back(pullWindow(log, e, end, return_error));
+    }
+  }
+}
+
+}  // namespace sdlqr::analysis::detail
