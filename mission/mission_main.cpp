@@ -1,59 +1,20 @@
-// sdlqr-mission: plays a scenario file's events on the bus against simulation time.
+// sdlqr-mission: binds the bus to the mission's core (mission/mission_core.hpp); SIM_CLOCK's
+// utime is the clock (100 Hz: the scenario's events are given to the centisecond).
 
-#include <chrono>
 #include <cstdio>
 #include <iostream>
 
+#include "sdlqr/bus/core_binding.hpp"
 #include "sdlqr/config/cli.hpp"
-#include "sdlqr/mission/command_resender.hpp"
-#include "sdlqr/mission/mission_player.hpp"
-#include "sdlqr/mission/trajectory_request.hpp"
-#include "sdlqr/bus/convert.hpp"
-#include "sdlqr/bus/node.hpp"
-#include "sdlqr/sim_clock_t.hpp"
+#include "sdlqr/mission/mission_cli.hpp"
+#include "sdlqr/mission/mission_core.hpp"
 
 using namespace sdlqr;
-
-namespace {
-
-void describe(const mission::ScenarioEvent& event, double now) {
-  std::fprintf(stderr, "sdlqr-mission: t=%7.3f s  ", now);
-  switch (event.kind) {
-    case mission::ScenarioEvent::Kind::kCommand: {
-      static const char* names[] = {"?", "arm", "disarm", "takeoff", "goto", "land"};
-      const int index = static_cast<int>(event.command.command);
-      std::fprintf(stderr, "command %s (%.2f, %.2f, %.2f) yaw %.2f", names[index >= 1 && index <= 5 ? index : 0],
-                   event.command.position[0], event.command.position[1], event.command.position[2], event.command.yaw);
-      break;
-    }
-    case mission::ScenarioEvent::Kind::kDisturbance:
-      if (event.disturbance.mode == DisturbanceMode::kHold) {
-        std::fprintf(stderr, "disturbance hold at (%.2f, %.2f, %.2f) m, %.0f N/m, for %.2f s",
-                     event.disturbance.hold_position[0], event.disturbance.hold_position[1],
-                     event.disturbance.hold_position[2], event.disturbance.hold_stiffness, event.disturbance.duration);
-      } else {
-        std::fprintf(stderr, "disturbance force (%.2f, %.2f, %.2f) N for %.2f s", event.disturbance.force[0],
-                     event.disturbance.force[1], event.disturbance.force[2], event.disturbance.duration);
-      }
-      break;
-    case mission::ScenarioEvent::Kind::kParams:
-      std::fprintf(stderr, "params mask %d", event.params.field_mask);
-      break;
-    case mission::ScenarioEvent::Kind::kTrajectory:
-      std::fprintf(stderr, "trajectory %s x%d (%s tracking)", event.trajectory.generator.c_str(), event.trajectory.laps,
-                   event.trajectory.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial");
-      break;
-  }
-  if (!event.label.empty()) std::fprintf(stderr, "  [%s]", event.label.c_str());
-  std::fprintf(stderr, "\n");
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   return runMain("sdlqr-mission", [&] {
     ProcessOptions options;
-    double no_clock_timeout = 10.0;
+    mission::MissionOptions mission_options;
     bool describe_only = false;
     std::vector<std::string> positional;
     ArgParser parser("sdlqr-mission",
@@ -61,120 +22,27 @@ int main(int argc, char** argv) {
                      "scenario file, using SIM_CLOCK's utime as the clock. Exits 0 when the scenario's duration\n"
                      "of simulation time has passed.");
     addProcessOptions(parser, &options);
-    parser.addOption("--no-clock-timeout", &no_clock_timeout, "S",
-                     "give up (exit 1) when no SIM_CLOCK arrives for this many wall seconds (default 10)");
-    double resend_interval = 1.0;
-    parser.addOption("--resend-interval", &resend_interval, "S",
-                     "re-send the current TAKEOFF/GOTO every S s of simulation time, for a restarted\n"
-                     "controller (default 1, 0: never)");
-    parser.addFlag("--describe", &describe_only,
-                   "validate the scenario, print name, vehicle, seed, rate and duration as key=value lines, exit");
-    parser.allowPositional(&positional, "SCENARIO.yaml");
+    mission::addMissionOptions(parser, &mission_options, &describe_only, &positional);
     parser.parseOrExit(argc, argv);
-    if (positional.size() != 1) throw std::invalid_argument("expected one scenario file (see --help)");
-    if (!(resend_interval >= 0.0 && resend_interval <= 60.0)) {
-      throw std::invalid_argument("--resend-interval: must be in [0, 60] s");
-    }
+    const mission::Scenario scenario = mission::loadScenarioArgument(positional, mission_options);
+    const std::string vehicle_path = options.config_path.empty() ? scenario.vehicle_path : options.config_path;
+    const ConfigReader vehicle = loadVehicleConfig(vehicle_path);
+    mission::MissionCore core(scenario, trajectory::TrajectoryParams::load(vehicle.child("trajectory")),
+                              LqrParams::load(vehicle.child("lqr")), mission_options);
+    if (describe_only) return mission::printDescription(scenario, vehicle_path);
 
-    const mission::Scenario scenario = mission::Scenario::load(positional[0]);
-    const ConfigReader vehicle_config = loadVehicleConfig(
-        options.config_path.empty() ? scenario.vehicle_path : options.config_path);
-    const LqrParams lqr = LqrParams::load(vehicle_config.child("lqr"));
-    const trajectory::TrajectoryParams trajectory_params =
-        trajectory::TrajectoryParams::load(vehicle_config.child("trajectory"));
-    // Trajectories are generated before the flight so a bad request fails here, not mid-air.
-    std::vector<Trajectory> trajectories(scenario.events.size());
-    for (size_t i = 0; i < scenario.events.size(); ++i) {
-      if (scenario.events[i].kind == mission::ScenarioEvent::Kind::kTrajectory) {
-        trajectories[i] = mission::buildTrajectory(scenario.events[i].trajectory, trajectory_params, lqr,
-                                                   "events[" + std::to_string(i) + "].trajectory");
-      }
-    }
-
-    if (describe_only) {
-      std::printf("name=%s\nvehicle=%s\nseed=%lld\nrate=%.17g\nduration=%.17g\nevents=%zu\n", scenario.name.c_str(),
-                  (options.config_path.empty() ? scenario.vehicle_path : options.config_path).c_str(), scenario.seed,
-                  scenario.rate, scenario.duration, scenario.events.size());
-      return 0;
-    }
-
-    bus::Node bus("sdlqr-mission", options);
-    mission::MissionPlayer player(scenario);
-    mission::CommandResender resender(static_cast<int64_t>(resend_interval * 1e6));
-    int64_t now_utime = -1;
-    // One sequence per channel: subscribers count gaps in seq as lost messages.
-    int64_t command_seq = 0, disturbance_seq = 0, params_seq = 0, trajectory_seq = 0;
-    bool finished = false;
-    bus.subscribe<sim_clock_t>(channel::kSimClock, [&](const sim_clock_t& clock) {
-      if (clock.utime <= now_utime) return;
-      now_utime = clock.utime;
-      bus.setSimTime(now_utime);
-    });
-
+    bus::Node node("sdlqr-mission", options, core.health());
+    bus::NodeOutbox outbox(node);
+    node.subscribe<sim_clock_t>(channel::kSimClock, [&](const sim_clock_t& c) { core.onClock(c.utime, outbox); });
+    core.setObserver(&mission::logEventToStderr);
     std::fprintf(stderr, "sdlqr-mission: scenario '%s', %zu events, %.1f s\n", scenario.name.c_str(),
                  scenario.events.size(), scenario.duration);
-    auto last_clock = std::chrono::steady_clock::now();
-    int64_t last_seen_utime = -1;
-    bus.setState(bus::ProcessState::kStarting);
-    while (bus.spin(20)) {
-      const auto wall_now = std::chrono::steady_clock::now();
-      if (now_utime != last_seen_utime) {
-        last_seen_utime = now_utime;
-        last_clock = wall_now;
-        bus.setState(bus::ProcessState::kRunning);
-      } else if (std::chrono::duration<double>(wall_now - last_clock).count() > no_clock_timeout) {
-        std::fprintf(stderr, "sdlqr-mission: no SIM_CLOCK for %.0f s: is sdlqr-sim running on this bus?\n",
-                     no_clock_timeout);
-        bus.shutdown();
-        return 1;
-      }
-      if (now_utime < 0) continue;
-      while (const mission::ScenarioEvent* event = player.nextDue(now_utime)) {
-        const size_t index = static_cast<size_t>(event - scenario.events.data());
-        describe(*event, static_cast<double>(now_utime) * 1e-6);
-        switch (event->kind) {
-          case mission::ScenarioEvent::Kind::kCommand: {
-            Command command = event->command;
-            command.utime = now_utime;
-            command.seq = command_seq++;
-            bus.publish(channel::kCommand, bus::toLcm(command));
-            resender.sent(command);
-            break;
-          }
-          case mission::ScenarioEvent::Kind::kDisturbance: {
-            Disturbance disturbance = event->disturbance;
-            disturbance.utime = now_utime;
-            disturbance.start_utime = now_utime;
-            disturbance.seq = disturbance_seq++;
-            bus.publish(channel::kDisturbance, bus::toLcm(disturbance));
-            break;
-          }
-          case mission::ScenarioEvent::Kind::kParams: {
-            ParamsUpdate params = event->params;
-            params.utime = now_utime;
-            params.seq = params_seq++;
-            bus.publish(channel::kParams, bus::toLcm(params));
-            break;
-          }
-          case mission::ScenarioEvent::Kind::kTrajectory: {
-            Trajectory trajectory = trajectories[index];
-            trajectory.utime = now_utime;
-            trajectory.start_utime = now_utime;
-            trajectory.seq = trajectory_seq++;
-            bus.publish(channel::kTrajectory, bus::toLcm(trajectory));
-            break;
-          }
-        }
-      }
-      if (const Command* resend = resender.due(now_utime)) bus.publish(channel::kCommand, bus::toLcm(*resend));
-      if (player.finished(now_utime)) {
-        finished = true;
-        break;
-      }
-    }
-    std::fprintf(stderr, "sdlqr-mission: %s at t=%.3f s\n", finished ? "scenario complete" : "stopped",
-                 static_cast<double>(now_utime) * 1e-6);
-    bus.shutdown();
-    return 0;
+    while (node.spin(20) && !core.finished() && !core.clockLost()) core.onWallTime(bus::monotonicSeconds());
+    if (core.clockLost()) std::fprintf(stderr, "sdlqr-mission: no SIM_CLOCK for %.0f s: is sdlqr-sim running on this bus?\n",
+                                       mission_options.no_clock_timeout_s);
+    else std::fprintf(stderr, "sdlqr-mission: %s at t=%.3f s\n", core.finished() ? "scenario complete" : "stopped",
+                      1e-6 * static_cast<double>(core.now()));
+    node.shutdown();
+    return core.clockLost() ? 1 : 0;
   });
 }

@@ -37,7 +37,7 @@ bool ReferenceGenerator::setTrackingMode(ReferenceMode mode, int64_t now_utime) 
   return tracker_.setMode(mode, static_cast<double>(now_utime) * 1e-6);
 }
 
-void ReferenceGenerator::handleCommand(const Command& command, const StateEstimate& latest) {
+void ReferenceGenerator::handleCommand(const Command& command) {
   const bool flying = phase_ != FlightPhase::kIdle;
   const bool rejoined = rejoined_;
   rejoined_ = false;
@@ -63,7 +63,10 @@ void ReferenceGenerator::handleCommand(const Command& command, const StateEstima
       if (flying) {
         tracker_.clear();
         phase_ = FlightPhase::kLanding;
-        ramp_position_ = Vec3(latest.position[0], latest.position[1], std::max(latest.position[2], ground_z_));
+        // The descent starts from the estimate of the next tick, not from whichever estimate
+        // happened to arrive before the command: the same tick gives the same ramp on the bus and
+        // in a replay that delivers the command just before that tick.
+        landing_pending_ = true;
         landed_since_utime_ = -1;
       }
       break;
@@ -158,6 +161,10 @@ bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
       return true;
     }
     case FlightPhase::kLanding: {
+      if (landing_pending_) {
+        ramp_position_ = Vec3(estimate.position[0], estimate.position[1], std::max(estimate.position[2], ground_z_));
+        landing_pending_ = false;
+      }
       if (landedAt(estimate)) {
         phase_ = FlightPhase::kIdle;
         return false;

@@ -55,7 +55,7 @@ void StateDependentLqr::handleCommand(const Command& command) {
   // The mission re-sends its current command with the same seq (so a restarted controller learns
   // the setpoint); this instance has acted on it already.
   if (command.seq == command_seq_handled_) return;
-  references_.handleCommand(command, latest_);
+  references_.handleCommand(command);
   command_seq_handled_ = command.seq;
 }
 

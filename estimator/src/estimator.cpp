@@ -18,27 +18,10 @@ constexpr double kDriftSignificance = 3.0;
 
 }  // namespace
 
-const char* counterName(Rejection reason) {
-  switch (reason) {
-    case Rejection::kImuNonFinite: return "reject.imu.nonfinite";
-    case Rejection::kImuOutOfRange: return "reject.imu.range";
-    case Rejection::kImuTimeBackwards: return "reject.imu.time_backwards";
-    case Rejection::kImuTimeGap: return "reject.imu.time_gap";
-    case Rejection::kVioNonFinite: return "reject.vio.nonfinite";
-    case Rejection::kVioBadQuaternion: return "reject.vio.quaternion";
-    case Rejection::kVioBadStd: return "reject.vio.std";
-    case Rejection::kVioOutOfOrder: return "reject.vio.out_of_order";
-    case Rejection::kVioTooOld: return "reject.vio.too_old";
-    case Rejection::kVioFuture: return "reject.vio.time_future";
-    case Rejection::kVioGated: return "reject.vio.gated";
-    case Rejection::kVioSuperseded: return "reject.vio.superseded";
-  }
-  return "reject.unknown";
-}
-
 int64_t EstimatorCounters::rejectedTotal() const {
   int64_t total = 0;
-  for (int64_t n : rejected) total += n;
+  for (int64_t n : imu_rejected) total += n;
+  for (int64_t n : vio_rejected) total += n;
   return total;
 }
 
@@ -77,9 +60,14 @@ const ErrorCovariance& Estimator::covariance() const {
 
 int64_t Estimator::stateUtime() const { return history_.empty() ? 0 : history_.newest().utime; }
 
-VioOutcome Estimator::reject(Rejection reason) {
-  ++counters_.rejected[static_cast<size_t>(reason)];
-  last_rejection_ = reason;
+void Estimator::rejectImu(RejectReason reason) {
+  ++counters_.imu_rejected[static_cast<size_t>(reason)];
+  last_imu_rejection_ = reason;
+}
+
+VioOutcome Estimator::rejectVio(RejectReason reason) {
+  ++counters_.vio_rejected[static_cast<size_t>(reason)];
+  last_vio_rejection_ = reason;
   return VioOutcome::kRejected;
 }
 
@@ -88,16 +76,16 @@ VioOutcome Estimator::reject(Rejection reason) {
 bool Estimator::imuTimingAcceptable(const ImuSample& sample) {
   if (!downsampler_.started()) return true;
   const int64_t step = sample.utime - downsampler_.lastSampleTime();
-  Rejection reason;
+  RejectReason reason;
   if (step <= 0) {
-    reason = Rejection::kImuTimeBackwards;
+    reason = RejectReason::kTimeBackwards;
   } else if (step > secondsToUs(params_.imu_max_gap)) {
-    reason = Rejection::kImuTimeGap;
+    reason = RejectReason::kTimeGap;
   } else {
     timing_rejects_in_a_row_ = 0;
     return true;
   }
-  reject(reason);
+  rejectImu(reason);
   // One bad timestamp is dropped; a sustained run means the clock itself changed (a restarted
   // simulator, a replayed log, a long outage): start over on the new clock.
   if (++timing_rejects_in_a_row_ < params_.imu_time_reset_count) return false;
@@ -107,12 +95,13 @@ bool Estimator::imuTimingAcceptable(const ImuSample& sample) {
 }
 
 std::optional<StateEstimate> Estimator::onImu(const ImuSample& sample) {
+  last_imu_rejection_ = RejectReason::kNone;
   if (!allFinite(sample.gyro) || !allFinite(sample.accel)) {
-    reject(Rejection::kImuNonFinite);
+    rejectImu(RejectReason::kNonFinite);
     return std::nullopt;
   }
   if (sample.gyro.cwiseAbs().maxCoeff() > params_.gyro_range || sample.accel.cwiseAbs().maxCoeff() > params_.accel_range) {
-    reject(Rejection::kImuOutOfRange);
+    rejectImu(RejectReason::kOutOfRange);
     return std::nullopt;
   }
   if (!imuTimingAcceptable(sample)) return std::nullopt;
@@ -134,7 +123,7 @@ std::optional<StateEstimate> Estimator::onImu(const ImuSample& sample) {
     pending_vio_.reset();
     // Only the first window of a stream can start after a pose that was pending in it.
     if (pose.utime < history_.oldest().utime) {
-      reject(Rejection::kVioTooOld);
+      rejectVio(RejectReason::kStale);
     } else {
       fuseAtCaptureTime(pose, needsInitialization(pose.utime));
     }
@@ -168,22 +157,23 @@ bool Estimator::needsInitialization(int64_t capture_utime) const {
 }
 
 VioOutcome Estimator::onVio(const VioPose& pose) {
+  last_vio_rejection_ = RejectReason::kNone;
   if (!allFinite(pose.position) || !pose.orientation.allFinite() || !std::isfinite(pose.position_std) ||
       !std::isfinite(pose.attitude_std)) {
-    return reject(Rejection::kVioNonFinite);
+    return rejectVio(RejectReason::kNonFinite);
   }
-  if (pose.position_std < 0.0 || pose.attitude_std < 0.0) return reject(Rejection::kVioBadStd);
+  if (pose.position_std < 0.0 || pose.attitude_std < 0.0) return rejectVio(RejectReason::kOutOfRange);
   if (std::abs(pose.orientation.norm() - 1.0) > params_.quaternion_norm_tolerance) {
-    return reject(Rejection::kVioBadQuaternion);
+    return rejectVio(RejectReason::kQuaternionNorm);
   }
   const int64_t t = pose.utime;
-  if (has_fused_ && t <= last_fused_capture_) return reject(Rejection::kVioOutOfOrder);
-  if (pending_vio_ && t <= pending_vio_->utime) return reject(Rejection::kVioOutOfOrder);
-  if (!downsampler_.started() || t > downsampler_.lastSampleTime()) return reject(Rejection::kVioFuture);
-  if (!history_.empty() && t < history_.oldest().utime) return reject(Rejection::kVioTooOld);
+  if (has_fused_ && t <= last_fused_capture_) return rejectVio(RejectReason::kTimeBackwards);
+  if (pending_vio_ && t <= pending_vio_->utime) return rejectVio(RejectReason::kTimeBackwards);
+  if (!downsampler_.started() || t > downsampler_.lastSampleTime()) return rejectVio(RejectReason::kTimeFuture);
+  if (!history_.empty() && t < history_.oldest().utime) return rejectVio(RejectReason::kStale);
   if (history_.empty() || t > history_.newest().utime) {
     // Captured inside the IMU window still being integrated: fuse it when that window closes.
-    if (pending_vio_) reject(Rejection::kVioSuperseded);
+    if (pending_vio_) rejectVio(RejectReason::kSuperseded);
     pending_vio_ = pose;
     return VioOutcome::kPending;
   }
@@ -256,7 +246,7 @@ VioOutcome Estimator::fuseAtCaptureTime(const VioPose& pose, bool initialize) {
     if (update.accepted) {
       gated_run_.clear();
     } else if (!gated_run_.add(t, update)) {
-      return reject(Rejection::kVioGated);
+      return rejectVio(RejectReason::kGated);
     } else {
       // The run's poses agree and the filter does not: trust the VIO. The innovation's drift
       // over the run measures the filter's velocity error; it is applied where it stands out of

@@ -1,6 +1,7 @@
 #include "sdlqr/gains/gains_cli.hpp"
 
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -90,6 +91,49 @@ std::string formatGainsJson(const State& x_lin, const Input& u_lin, const LqrPar
   json += ", \"x_lin\": " + array(x_lin);
   json += ", \"u_lin\": " + array(u_lin);
   return json + "}";
+}
+
+void addOnceOptions(ArgParser& parser, OnceOptions* o) {
+  parser.addFlag("--once", &o->once, "solve once at --state/--input, print one JSON object and exit\n"
+                 "                          (without it: solve at 10 Hz on the bus and publish GAINS)");
+  parser.addOption("--state", &o->state_text, "P3,Q4,V3", "linearization state px,py,pz,qw,qx,qy,qz,vx,vy,vz");
+  parser.addOption("--input", &o->input_text, "W3,C", "linearization input wx,wy,wz,c (rad/s, m/s^2)");
+  parser.addOption("--method", &o->method_text, "NAME", "tangent or iterative (default: lqr.method of --config)");
+}
+
+const char* const kOnceEpilog =
+    "example: sdlqr-gains --once --state 0,0,1,1,0,0,0,0,0,0 --input 0,0,0,9.81\n"
+    "output:  {\"status\", \"method\", \"K\" (4x10, u = u0 + K (x - x0)), \"dt\", \"iterations\",\n"
+    "          \"solve_us\", \"residual\", \"x_lin\" (quaternion normalized), \"u_lin\"}\n"
+    "exit codes: 0 solved, 1 solver failure (JSON still printed), 2 bad input or config";
+
+LqrParams lqrParamsWithMethod(const ConfigReader& lqr, const OnceOptions& options) {
+  LqrParams params = LqrParams::load(lqr);
+  if (!options.method_text.empty() && !parseLqrMethod(options.method_text, params.method)) {
+    throw std::invalid_argument("--method: expected tangent or iterative, got '" + options.method_text + "'");
+  }
+  return params;
+}
+
+void requireBusMode(const OnceOptions& options) {
+  if (!options.state_text.empty() || !options.input_text.empty()) {
+    throw std::invalid_argument("--state and --input need --once");
+  }
+}
+
+int solveOnce(const OnceOptions& options, const LqrParams& params, std::ostream& out) {
+  if (options.state_text.empty() || options.input_text.empty()) {
+    throw std::invalid_argument("--once needs --state and --input");
+  }
+  State x = parseStateList(options.state_text, "--state");
+  const Input u = parseInputList(options.input_text, "--input");
+  const auto start = std::chrono::steady_clock::now();
+  const LqrResult result = solveLqr(x, u, params);
+  const auto stop = std::chrono::steady_clock::now();
+  orientation(x).normalize();
+  const double solve_us = std::chrono::duration<double, std::micro>(stop - start).count();
+  out << formatGainsJson(x, u, params, result, solve_us) << "\n";
+  return result.status == SolveStatus::kOk ? 0 : 1;
 }
 
 }  // namespace sdlqr::gains

@@ -50,6 +50,8 @@ void decode(MessageType type, const LogEvent& e, FlightLog& log, ChannelTimeline
     case MessageType::kHeartbeat: decodeInto<heartbeat_t>(e, log.heartbeat, t); break;
     case MessageType::kSimTruth: decodeInto<sim_truth_t>(e, log.sim_truth, t); break;
     case MessageType::kSimClock: decodeInto<sim_clock_t>(e, log.sim_clock, t); break;
+    case MessageType::kOther:
+    case MessageType::kCount: break;
   }
 }
 

@@ -46,10 +46,10 @@ BodyrateLoop::BodyrateLoop(const VehicleParams& vehicle, const LowlevelParams& p
   status_.command_age = std::numeric_limits<double>::infinity();
 }
 
-RateCommandReject BodyrateLoop::setRateCommand(const RateCommand& command) {
-  const RateCommandReject reason = checkRateCommand(command, params_.input_limits, maxCommandThrust(), last_imu_utime_,
+RejectReason BodyrateLoop::setRateCommand(const RateCommand& command) {
+  const RejectReason reason = checkRateCommand(command, params_.input_limits, maxCommandThrust(), last_imu_utime_,
                                                     command_utime_, params_.rate_cmd_timeout);
-  if (reason != RateCommandReject::kNone) {
+  if (reason != RejectReason::kNone) {
     ++counters_.rate_cmd_rejected[static_cast<size_t>(reason)];
     return reason;
   }
@@ -136,16 +136,16 @@ void BodyrateLoop::updateModes() {
 }
 
 MotorCommand BodyrateLoop::step(const ImuSample& sample) {
-  ImuReject reason = checkImu(sample, params_.input_limits, last_imu_utime_);
-  const bool clock_reject = reason == ImuReject::kTimeBackwards || reason == ImuReject::kTimeJump;
+  RejectReason reason = checkImu(sample, params_.input_limits, last_imu_utime_);
+  const bool clock_reject = reason == RejectReason::kTimeBackwards || reason == RejectReason::kTimeGap;
   if (clock_reject && ++consecutive_time_rejects_ >= kClockResyncSamples) {
     ++counters_.imu_resyncs;
     last_imu_utime_ = kNoTime;
     command_utime_ = kNoTime;
-    reason = ImuReject::kNone;
+    reason = RejectReason::kNone;
   }
   last_imu_reject_ = reason;
-  if (reason != ImuReject::kNone) {
+  if (reason != RejectReason::kNone) {
     ++counters_.imu_rejected[static_cast<size_t>(reason)];
     return output_;
   }

@@ -27,58 +27,33 @@ std::string InputLimits::invalidReason() const {
   return {};
 }
 
-const char* toString(RateCommandReject reason) {
-  switch (reason) {
-    case RateCommandReject::kNone: return "none";
-    case RateCommandReject::kNonFinite: return "nonfinite";
-    case RateCommandReject::kRateLimit: return "rate_limit";
-    case RateCommandReject::kThrustRange: return "thrust_range";
-    case RateCommandReject::kTimeBackwards: return "time_backwards";
-    case RateCommandReject::kFuture: return "future";
-    case RateCommandReject::kStale: return "stale";
-    case RateCommandReject::kNoClock: return "no_clock";
-  }
-  return "unknown";
-}
-
-const char* toString(ImuReject reason) {
-  switch (reason) {
-    case ImuReject::kNone: return "none";
-    case ImuReject::kNonFinite: return "nonfinite";
-    case ImuReject::kOutOfRange: return "out_of_range";
-    case ImuReject::kTimeBackwards: return "time_backwards";
-    case ImuReject::kTimeJump: return "time_jump";
-  }
-  return "unknown";
-}
-
-ImuReject checkImu(const ImuSample& sample, const InputLimits& limits, int64_t last_utime) {
-  if (!sample.gyro.allFinite() || !sample.accel.allFinite()) return ImuReject::kNonFinite;
+RejectReason checkImu(const ImuSample& sample, const InputLimits& limits, int64_t last_utime) {
+  if (!sample.gyro.allFinite() || !sample.accel.allFinite()) return RejectReason::kNonFinite;
   if (sample.gyro.cwiseAbs().maxCoeff() > limits.max_gyro || sample.accel.cwiseAbs().maxCoeff() > limits.max_accel) {
-    return ImuReject::kOutOfRange;
+    return RejectReason::kOutOfRange;
   }
   if (last_utime != kNoTime) {
-    if (sample.utime <= last_utime) return ImuReject::kTimeBackwards;
+    if (sample.utime <= last_utime) return RejectReason::kTimeBackwards;
     if (1e-6 * (static_cast<double>(sample.utime) - static_cast<double>(last_utime)) > limits.max_imu_gap) {
-      return ImuReject::kTimeJump;
+      return RejectReason::kTimeGap;
     }
   }
-  return ImuReject::kNone;
+  return RejectReason::kNone;
 }
 
-RateCommandReject checkRateCommand(const RateCommand& command, const InputLimits& limits, double max_thrust,
+RejectReason checkRateCommand(const RateCommand& command, const InputLimits& limits, double max_thrust,
                                    int64_t imu_utime, int64_t last_utime, double max_age) {
-  if (!command.body_rate.allFinite() || !std::isfinite(command.thrust)) return RateCommandReject::kNonFinite;
-  if (command.body_rate.cwiseAbs().maxCoeff() > limits.max_body_rate) return RateCommandReject::kRateLimit;
-  if (!(command.thrust >= 0.0 && command.thrust <= max_thrust)) return RateCommandReject::kThrustRange;
+  if (!command.body_rate.allFinite() || !std::isfinite(command.thrust)) return RejectReason::kNonFinite;
+  if (command.body_rate.cwiseAbs().maxCoeff() > limits.max_body_rate) return RejectReason::kOutOfRange;
+  if (!(command.thrust >= 0.0 && command.thrust <= max_thrust)) return RejectReason::kOutOfRange;
   // Equal times are fine: two commands may come from the same state estimate.
-  if (last_utime != kNoTime && command.utime < last_utime) return RateCommandReject::kTimeBackwards;
-  if (imu_utime == kNoTime) return RateCommandReject::kNoClock;
+  if (last_utime != kNoTime && command.utime < last_utime) return RejectReason::kTimeBackwards;
+  if (imu_utime == kNoTime) return RejectReason::kNoClock;
   // In double: a hostile utime must not overflow the subtraction.
   const double lead = 1e-6 * (static_cast<double>(command.utime) - static_cast<double>(imu_utime));
-  if (lead > limits.max_command_lead) return RateCommandReject::kFuture;
-  if (-lead > max_age) return RateCommandReject::kStale;
-  return RateCommandReject::kNone;
+  if (lead > limits.max_command_lead) return RejectReason::kTimeFuture;
+  if (-lead > max_age) return RejectReason::kStale;
+  return RejectReason::kNone;
 }
 
 }  // namespace sdlqr::lowlevel

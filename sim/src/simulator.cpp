@@ -55,17 +55,17 @@ void Simulator::setBodyState(const BodyState& state, const Vec4& motor_thrust) {
   acceleration_.setZero();
 }
 
-MotorCommandFault Simulator::setMotorCommand(const MotorCommand& command) {
-  const MotorCommandFault fault = checkMotorCommand(command, vehicle_);
-  if (fault == MotorCommandFault::kNone) motors_.setSetpoint(saturatedSetpoint(command, vehicle_));
+RejectReason Simulator::setMotorCommand(const MotorCommand& command) {
+  const RejectReason fault = checkMotorCommand(command, vehicle_);
+  if (fault == RejectReason::kNone) motors_.setSetpoint(saturatedSetpoint(command, vehicle_));
   return fault;
 }
 
-DisturbanceFault Simulator::addDisturbance(const Disturbance& disturbance) {
-  const DisturbanceFault fault = checkDisturbance(disturbance, params_.disturbance);
-  if (fault != DisturbanceFault::kNone) return fault;
+RejectReason Simulator::addDisturbance(const Disturbance& disturbance) {
+  const RejectReason fault = checkDisturbance(disturbance, params_.disturbance);
+  if (fault != RejectReason::kNone) return fault;
   // The step that starts at utime() is the first that can feel it.
-  return disturbances_.add(disturbance, utime()) ? DisturbanceFault::kNone : DisturbanceFault::kQueueFull;
+  return disturbances_.add(disturbance, utime()) ? RejectReason::kNone : RejectReason::kQueueFull;
 }
 
 StepOutput Simulator::step() {

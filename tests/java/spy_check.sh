@@ -27,8 +27,12 @@ sleep 5
 if kill -0 "$spy" 2>/dev/null; then
   echo "lcm-spy still running after 5 s"
   # Stop the JVM that xvfb-run started (its child, by pid); xvfb-run then stops its Xvfb and ends.
+  xvfb=$(pgrep -P "$spy" -x Xvfb)
   for child in $(pgrep -P "$spy" -f lcm.spy.Spy); do kill -TERM "$child" 2>/dev/null; done
   wait "$spy" 2>/dev/null
+  # When xvfb-run fails to clean up ("problem while cleaning up temporary directory") its Xvfb
+  # lives on, holding every descriptor it inherited (the flight lock of `flock ... ctest`).
+  for pid in $xvfb; do kill -TERM "$pid" 2>/dev/null; done
 else
   wait "$spy"
   fail "lcm-spy exited within 5 s (exit code $?)"

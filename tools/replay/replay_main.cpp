@@ -129,6 +129,7 @@ int main(int argc, char** argv) {
     params.lqr = LqrParams::load(config.child("lqr"));
     params.controller = controller::ControllerParams::load(config.child("controller"));
     params.gains = gains::GainsParams::load(config.child("gains"));
+    params.faults = FaultParams::load(config.child("faults"));
 
     const auto load_start = std::chrono::steady_clock::now();
     replay::LoadStats load;
@@ -186,6 +187,14 @@ int main(int argc, char** argv) {
                 static_cast<long long>(pairing.solve_failures),
                 static_cast<long long>(pairing.estimates_missed_by_controller),
                 static_cast<long long>(pairing.estimates_missed_by_solver));
+    std::printf("foreign inputs (recorded outputs the replay did not compute, judged by the cores): STATE_EST %lld, "
+                "GAINS %lld\n",
+                static_cast<long long>(pairing.foreign_estimates), static_cast<long long>(pairing.foreign_gains));
+    for (const auto& [process, health] : {std::pair{"sdlqr-estimator", &recomputation.estimator().health()},
+                                          std::pair{"sdlqr-gains", &recomputation.gains().health()},
+                                          std::pair{"sdlqr-controller", &recomputation.controller().health()}}) {
+      std::printf("rejections %s: %s\n", process, health->describeRejections().c_str());
+    }
     const replay::Comparison comparison = replay::compareOutputs(flight, recomputation.outputs(), tolerance);
     std::cout << replay::formatComparison(comparison);
     std::cout << "replay log: " << out_path << " (" << writer.written() << " messages under " << prefix << "/)\n";

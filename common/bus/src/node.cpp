@@ -18,7 +18,7 @@
 #include <stdexcept>
 
 #include "sdlqr/heartbeat_t.hpp"
-#include "sdlqr/bus/watchdog_report.hpp"
+#include "sdlqr/bus/wall_clock.hpp"
 #include "udpm_inbox.hpp"
 
 namespace sdlqr::bus {
@@ -88,17 +88,10 @@ FaultInjection FaultInjection::parse(const std::string& spec) {
   return f;
 }
 
-Counters::Id Counters::add(const std::string& name) {
-  for (size_t i = 0; i < names_.size(); ++i) {
-    if (names_[i] == name) return static_cast<Id>(i);
-  }
-  names_.push_back(name);
-  values_.push_back(0);
-  return static_cast<Id>(names_.size() - 1);
-}
+Node::Node(std::string process, const ProcessOptions& options) : Node(std::move(process), options, own_health_) {}
 
-Node::Node(std::string process, const ProcessOptions& options)
-    : process_(std::move(process)), vehicle_(options.vehicle) {
+Node::Node(std::string process, const ProcessOptions& options, ProcessHealth& health)
+    : process_(std::move(process)), vehicle_(options.vehicle), health_(&health) {
   for (char c : vehicle_) {
     if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-')) {
       throw std::invalid_argument("--vehicle: use letters, digits, '_' or '-' only, got '" + vehicle_ + "'");
@@ -109,14 +102,12 @@ Node::Node(std::string process, const ProcessOptions& options)
   layout_ = isUdpmUrl(base_url_) ? parseBusLayout(options.bus_layout) : BusLayout::kSingle;
   base_url_ = urlWithPortOffset(base_url_, 0);
   endpoint(base_url_);
-  reject_decode_ = counters_.add("reject.decode");
-  reject_size_ = counters_.add("reject.size");
   if (isUdpmUrl(base_url_)) {
     // Datagrams its sockets read, against `received` (messages handed to handlers).
-    bus_datagrams_ = counters_.add("bus.datagrams");
-    bus_malformed_ = counters_.add("bus.malformed");
-    bus_over_capacity_ = counters_.add("bus.over_capacity");  // queue full: dropped on arrival
-    bus_unrouted_ = counters_.add("bus.unrouted");      // no subscription of this process wants it
+    bus_datagrams_ = health_->counters().add("bus.datagrams");
+    bus_malformed_ = health_->counters().add("bus.malformed");
+    bus_over_capacity_ = health_->counters().add("bus.over_capacity");  // queue full: dropped on arrival
+    bus_unrouted_ = health_->counters().add("bus.unrouted");      // no subscription of this process wants it
   }
   if (const char* spec = std::getenv("SDLQR_FAULTS"); spec != nullptr && spec[0] != '\0') {
     setFaultInjection(FaultInjection::parse(spec));
@@ -232,11 +223,11 @@ bool Node::drainInbox(Endpoint& e) {
   std::fill(e.delivered.begin(), e.delivered.end(), 0);
   for (const WireMessage& m : e.batch) {
     const ChannelRoutes& routes = *routesOf(e, m.channel, static_cast<size_t>(&m - e.batch.data()));
-    if (routes.routes.empty()) counters_.increment(bus_unrouted_);
+    if (routes.routes.empty()) health_->counters().increment(bus_unrouted_);
     for (int r : routes.routes) {
       const Route& route = e.routes[static_cast<size_t>(r)];
       if (route.capacity > 0 && e.delivered[static_cast<size_t>(r)] >= route.capacity) {
-        counters_.increment(bus_over_capacity_);
+        health_->counters().increment(bus_over_capacity_);
         continue;
       }
       ++e.delivered[static_cast<size_t>(r)];
@@ -275,8 +266,8 @@ void Node::setFaultInjection(const FaultInjection& faults) {
   // Each process draws its own sequence from the common seed.
   fault_rng_.seed(faults.seed ^ std::hash<std::string>{}(process_));
   if (faults.enabled() && fault_dropped_ < 0) {
-    fault_dropped_ = counters_.add("fault.dropped");
-    fault_delayed_ = counters_.add("fault.delayed");
+    fault_dropped_ = health_->counters().add("fault.dropped");
+    fault_delayed_ = health_->counters().add("fault.delayed");
   }
 }
 
@@ -284,7 +275,7 @@ void Node::injectFault(SubscriptionBase& sub, const void* data, uint32_t size) {
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   if (faults_.drop > 0.0 && uniform(fault_rng_) < faults_.drop) {
     ++received_;
-    counters_.increment(fault_dropped_);
+    health_->counters().increment(fault_dropped_);
     return;
   }
   const double delay_ms = faults_.delay_min_ms + (faults_.delay_max_ms - faults_.delay_min_ms) * uniform(fault_rng_);
@@ -297,7 +288,7 @@ void Node::injectFault(SubscriptionBase& sub, const void* data, uint32_t size) {
     return;
   }
   sub.last_due = due;
-  counters_.increment(fault_delayed_);
+  health_->counters().increment(fault_delayed_);
   DelayedMessage message;
   message.sub = &sub;
   message.due = due;
@@ -418,7 +409,7 @@ void Node::addSubscription(const std::string& channel, std::unique_ptr<Subscript
 
 void Node::noteSequence(SubscriptionBase& sub, int64_t seq) {
   // A forward jump is a loss; a backward jump is a publisher restart and starts a new count.
-  if (sub.last_seq >= 0 && seq > sub.last_seq + 1) dropped_ += seq - sub.last_seq - 1;
+  if (sub.last_seq >= 0 && seq > sub.last_seq + 1) health_->countDropped(seq - sub.last_seq - 1);
   sub.last_seq = seq;
 }
 
@@ -474,7 +465,7 @@ bool Node::waitReadable(std::chrono::steady_clock::duration timeout) {
 }
 
 void Node::shutdown() {
-  state_ = ProcessState::kStopping;
+  health_->setState(ProcessState::kStopping);
   publishHeartbeat();
 }
 
@@ -496,27 +487,27 @@ void Node::publishHeartbeat() {
       datagrams += e->inbox->datagrams();
       malformed += e->inbox->malformed();
     }
-    counters_.set(bus_datagrams_, datagrams);
-    counters_.set(bus_malformed_, malformed);
+    health_->counters().set(bus_datagrams_, datagrams);
+    health_->counters().set(bus_malformed_, malformed);
   }
 
   heartbeat_t hb;
-  hb.utime = sim_utime_;
+  const ProcessHealth& health = *health_;
+  hb.utime = health.simTime();
   hb.seq = heartbeat_seq_++;
   hb.process = process_;
   hb.pid = static_cast<int32_t>(getpid());
-  hb.state = static_cast<int8_t>(running() ? state_ : ProcessState::kStopping);
+  hb.state = static_cast<int8_t>(running() ? health.state() : ProcessState::kStopping);
   hb.received = received_;
   hb.published = published_;
-  hb.dropped = dropped_;
-  hb.rejected = rejected_;
-  hb.deadline_misses = deadline_misses_;
-  hb.errors = errors_;
+  hb.dropped = health.dropped();
+  hb.rejected = health.rejected();
+  hb.deadline_misses = health.deadlineMisses();
+  hb.errors = health.errors();
   hb.cpu_percent = cpu_percent;
-  hb.num_counters = static_cast<int32_t>(counters_.names().size());
-  hb.counter_names = counters_.names();
-  hb.counter_values = counters_.values();
-  hb.last_error = last_error_;
+  health.exportCounters(hb.counter_names, hb.counter_values);
+  hb.num_counters = static_cast<int32_t>(hb.counter_names.size());
+  hb.last_error = health.lastError();
   publish(channel::kHeartbeat, hb);
 }
 

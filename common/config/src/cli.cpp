@@ -168,4 +168,14 @@ int runMain(const std::string& program, const std::function<int()>& body) {
   }
 }
 
+ProcessOptions parseProcessCommandLine(int argc, const char* const* argv, const std::string& program,
+                                       const std::string& description) {
+  ProcessOptions options;
+  ArgParser parser(program, description);
+  addProcessOptions(parser, &options);
+  parser.setEpilog("exit codes: 0 stopped by SIGINT/SIGTERM, 1 runtime failure, 2 bad option or configuration");
+  parser.parseOrExit(argc, argv);
+  return options;
+}
+
 }  // namespace sdlqr

@@ -27,23 +27,6 @@ bool modeKnown(ReferenceMode mode) {
 
 }  // namespace
 
-const char* counterName(RejectReason reason) {
-  switch (reason) {
-    case RejectReason::kNone: return "reject.none";
-    case RejectReason::kNonFinite: return "reject.nonfinite";
-    case RejectReason::kQuaternionNorm: return "reject.quaternion";
-    case RejectReason::kOutOfRange: return "reject.range";
-    case RejectReason::kBadEnum: return "reject.enum";
-    case RejectReason::kBadSize: return "reject.size";
-    case RejectReason::kBadStatus: return "reject.status";
-    case RejectReason::kTimeBackwards: return "reject.time_backwards";
-    case RejectReason::kTimeFuture: return "reject.time_future";
-    case RejectReason::kUnstable: return "reject.unstable";
-    case RejectReason::kCount: break;
-  }
-  return "reject.unknown";
-}
-
 RejectReason validate(const StateEstimate& m, const ValidationLimits& limits) {
   if (!finite(m.position) || !finite(m.orientation) || !finite(m.velocity) || !finite(m.body_rate) ||
       !finite(m.gyro_bias) || !finite(m.accel_bias) || !finite(m.position_std) || !finite(m.attitude_std)) {

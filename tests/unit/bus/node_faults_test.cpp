@@ -22,7 +22,7 @@ ProcessOptions memq() {
   return options;
 }
 
-int64_t counter(Node& node, const std::string& name) { return node.counters().value(node.counters().add(name)); }
+int64_t counter(Node& node, const std::string& name) { return node.health().counter(name); }
 
 std::vector<uint8_t> encode(const state_estimate_t& m) {
   std::vector<uint8_t> bytes(static_cast<size_t>(m.getEncodedSize()));

@@ -46,7 +46,7 @@ TEST(EstimatorAllocation, OnImuAndOnVioNeverAllocate) {
   EXPECT_EQ(estimator.counters().initializations, 2);
   EXPECT_EQ(estimator.counters().accel_clipping, 1);
   EXPECT_EQ(estimator.counters().vio_resets, 1);
-  EXPECT_GT(estimator.counters().rejectedFor(Rejection::kVioBadQuaternion), 0);
+  EXPECT_GT(estimator.counters().vioRejected(RejectReason::kQuaternionNorm), 0);
   EXPECT_GT(estimator.counters().vio_fused, 250);
 }
 

@@ -78,13 +78,13 @@ TEST_F(HoverFixture, RejectsOutOfOrderTooOldAndFuturePosesWithoutTouchingTheStat
 
   // THEN each is rejected for its own reason and counted, and the state is untouched
   EXPECT_EQ(estimator.onVio(repeated), VioOutcome::kRejected);
-  EXPECT_EQ(estimator.lastRejection(), Rejection::kVioOutOfOrder);
+  EXPECT_EQ(estimator.lastVioRejection(), RejectReason::kTimeBackwards);
   EXPECT_EQ(estimator.onVio(older), VioOutcome::kRejected);
-  EXPECT_EQ(estimator.lastRejection(), Rejection::kVioOutOfOrder);
+  EXPECT_EQ(estimator.lastVioRejection(), RejectReason::kTimeBackwards);
   EXPECT_EQ(estimator.onVio(future), VioOutcome::kRejected);
-  EXPECT_EQ(estimator.lastRejection(), Rejection::kVioFuture);
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioOutOfOrder), 2);
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioFuture), 1);
+  EXPECT_EQ(estimator.lastVioRejection(), RejectReason::kTimeFuture);
+  EXPECT_EQ(estimator.counters().vioRejected(RejectReason::kTimeBackwards), 2);
+  EXPECT_EQ(estimator.counters().vioRejected(RejectReason::kTimeFuture), 1);
   expectSameState(estimator, twin);
 
   // (a pose newer than the last fused one but older than the history needs a VIO gap first)
@@ -97,8 +97,8 @@ TEST_F(HoverFixture, RejectsOutOfOrderTooOldAndFuturePosesWithoutTouchingTheStat
   stale.utime = gapped.stateUtime() - 300'000;
   stale.seq = 10'000;
   EXPECT_EQ(gapped.onVio(stale), VioOutcome::kRejected);
-  EXPECT_EQ(gapped.lastRejection(), Rejection::kVioTooOld);
-  EXPECT_EQ(gapped.counters().rejectedFor(Rejection::kVioTooOld), 1);
+  EXPECT_EQ(gapped.lastVioRejection(), RejectReason::kStale);
+  EXPECT_EQ(gapped.counters().vioRejected(RejectReason::kStale), 1);
 }
 
 TEST_F(HoverFixture, RejectsMalformedPosesWithoutTouchingTheState) {
@@ -123,11 +123,11 @@ TEST_F(HoverFixture, RejectsMalformedPosesWithoutTouchingTheState) {
   // THEN each is rejected for its reason and counted, and nothing changed
   EXPECT_EQ(estimator.onVio(nan_position), VioOutcome::kRejected);
   EXPECT_EQ(estimator.onVio(nan_std), VioOutcome::kRejected);
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioNonFinite), 2);
+  EXPECT_EQ(estimator.counters().vioRejected(RejectReason::kNonFinite), 2);
   EXPECT_EQ(estimator.onVio(long_quaternion), VioOutcome::kRejected);
-  EXPECT_EQ(estimator.lastRejection(), Rejection::kVioBadQuaternion);
+  EXPECT_EQ(estimator.lastVioRejection(), RejectReason::kQuaternionNorm);
   EXPECT_EQ(estimator.onVio(negative_std), VioOutcome::kRejected);
-  EXPECT_EQ(estimator.lastRejection(), Rejection::kVioBadStd);
+  EXPECT_EQ(estimator.lastVioRejection(), RejectReason::kOutOfRange);
   expectSameState(estimator, twin);
   // AND the good pose is still fused afterwards
   EXPECT_EQ(estimator.onVio(good), VioOutcome::kFused);
@@ -147,7 +147,7 @@ TEST_F(HoverFixture, GatesAPoseThatJumpsAway) {
 
   // THEN the chi-square gate rejects it and the state is unchanged
   EXPECT_EQ(estimator.onVio(jump), VioOutcome::kRejected);
-  EXPECT_EQ(estimator.lastRejection(), Rejection::kVioGated);
+  EXPECT_EQ(estimator.lastVioRejection(), RejectReason::kGated);
   expectSameState(estimator, twin);
 }
 
@@ -180,7 +180,7 @@ TEST_F(HoverFixture, NanImuSampleIsRejectedAsIfItNeverArrived) {
   }
 
   // THEN the rejected samples were counted and left no trace: both states are bit-identical
-  EXPECT_EQ(with_nan.counters().rejectedFor(Rejection::kImuNonFinite), 2);
+  EXPECT_EQ(with_nan.counters().imuRejected(RejectReason::kNonFinite), 2);
   EXPECT_EQ(without.counters().rejectedTotal(), 0);
   expectSameState(with_nan, without);
   EXPECT_TRUE(with_nan.healthy());
@@ -207,10 +207,10 @@ TEST_F(HoverFixture, OutOfRangeAndBackwardImuSamplesAreRejected) {
   // THEN each is rejected and counted, nothing changes
   EXPECT_FALSE(estimator.onImu(spinning));
   EXPECT_FALSE(estimator.onImu(slamming));
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kImuOutOfRange), 2);
+  EXPECT_EQ(estimator.counters().imuRejected(RejectReason::kOutOfRange), 2);
   EXPECT_FALSE(estimator.onImu(old));
   EXPECT_FALSE(estimator.onImu(duplicate));
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kImuTimeBackwards), 2);
+  EXPECT_EQ(estimator.counters().imuRejected(RejectReason::kTimeBackwards), 2);
   expectSameState(estimator, twin);
 }
 
@@ -245,7 +245,7 @@ TEST(EstimatorDropout, VioTimeoutAfterTheConfiguredTimeAndRecovery) {
   EXPECT_LT(seconds(timeout_end), 9.1);  // first pose after the gap arrives by 9.05 s
   EXPECT_EQ(run.outputs.back().estimate.status, EstimatorStatus::kOk);
   EXPECT_EQ(estimator.counters().initializations, 1);
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioGated), 0);
+  EXPECT_EQ(estimator.counters().vioRejected(RejectReason::kGated), 0);
   // AND accuracy is back within targets a second after the gap
   EXPECT_LT(run.positionRms(10.0, 14.0), 0.03);
   EXPECT_LT(run.attitudeRmsDeg(10.0, 14.0), 1.0);
@@ -267,7 +267,7 @@ TEST(EstimatorDropout, ReinitialisesFromTheNextPoseAfterALongGap) {
 
   // THEN the first pose after the gap re-initialises the filter and it follows the new frame
   EXPECT_EQ(estimator.counters().initializations, 2);
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioGated), 0);
+  EXPECT_EQ(estimator.counters().vioRejected(RejectReason::kGated), 0);
   const StateEstimate& final_estimate = run.outputs.back().estimate;
   const Vec3 truth = sensors.truthAt(final_estimate.utime).position + shift;
   std::cout << "[ measured ] after re-initialisation: position error " << (final_estimate.position - truth).norm() * 1e3
@@ -292,7 +292,7 @@ TEST(EstimatorRestart, AnEstimatorStartedMidFlightInitialisesAndConverges) {
   // THEN it initialises from the first pose (zero velocity), no later pose is gated, and after a
   // second it meets the targets
   EXPECT_EQ(estimator.counters().initializations, 1);
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioGated), 0);
+  EXPECT_EQ(estimator.counters().vioRejected(RejectReason::kGated), 0);
   const double pos_rms = run.positionRms(11.0, 16.0), att_rms = run.attitudeRmsDeg(11.0, 16.0);
   std::cout << "[ measured ] restarted mid-flight: position RMS " << pos_rms * 1e3 << " mm, attitude RMS " << att_rms
             << " deg (from 1 s after start)\n";
@@ -315,7 +315,7 @@ TEST(EstimatorRestart, RestartsOnANewImuClock) {
   // THEN after imu_time_reset_count samples in a row behind the old clock the filter starts over
   // on the new clock, re-initialises from the next pose and is healthy again
   EXPECT_EQ(estimator.counters().clock_resets, 1);
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kImuTimeBackwards), params.imu_time_reset_count);
+  EXPECT_EQ(estimator.counters().imuRejected(RejectReason::kTimeBackwards), params.imu_time_reset_count);
   EXPECT_EQ(estimator.counters().initializations, 2);
   EXPECT_TRUE(estimator.healthy());
   EXPECT_LT(run.positionRms(1.0, 3.0), 0.03);

@@ -59,7 +59,7 @@ Landing land(const EstimatorParams& params, int k) {
     const auto out = estimator.onImu(e.imu);
     if (!out) continue;
     if (out->utime <= touchdown) {
-      gated_at_touchdown = estimator.counters().rejectedFor(Rejection::kVioGated);
+      gated_at_touchdown = estimator.counters().vioRejected(RejectReason::kGated);
       continue;
     }
     const TruthSample truth = sensors.truthAt(out->utime);
@@ -77,7 +77,7 @@ Landing land(const EstimatorParams& params, int k) {
   }
   const EstimatorCounters& c = estimator.counters();
   landing.clipped = c.accel_clipping;
-  landing.gated_after_touchdown = c.rejectedFor(Rejection::kVioGated) - gated_at_touchdown;
+  landing.gated_after_touchdown = c.vioRejected(RejectReason::kGated) - gated_at_touchdown;
   landing.resets = c.vio_resets;
   landing.initializations = c.initializations;
   landing.blind_time = 1e-6 * static_cast<double>(first_arrival - touchdown);
@@ -203,7 +203,7 @@ TEST(EstimatorLanding, CountsClippedSamplesItAccepts) {
   next(200.0);
   // THEN the two at or beyond the clip level are counted, the corrupt one is only rejected
   EXPECT_EQ(estimator.counters().accel_clipping, 2);
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kImuOutOfRange), 1);
+  EXPECT_EQ(estimator.counters().imuRejected(RejectReason::kOutOfRange), 1);
 }
 
 }  // namespace

@@ -138,7 +138,7 @@ TEST(Estimator, AgileFigureEightMeetsTargets) {
   EXPECT_GT(max_rate, 1.5);
   EXPECT_LT(pos_rms, kPositionTarget);
   EXPECT_LT(att_rms, kAttitudeTargetDeg);
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioGated), 0);
+  EXPECT_EQ(estimator.counters().vioRejected(RejectReason::kGated), 0);
   EXPECT_EQ(estimator.counters().rejectedTotal(), 0);
   EXPECT_EQ(run.countStatus(EstimatorStatus::kVioTimeout), 0);
 }
@@ -223,7 +223,7 @@ TEST(Estimator, FusingAtCaptureTimeBeatsFusingAtArrival) {
   const double capture_att = capture.attitudeRmsDeg(4.0, 20.0), arrival_att = arrival.attitudeRmsDeg(4.0, 20.0);
   std::cout << "[ measured ] at capture: position RMS " << capture_pos * 1e3 << " mm, attitude RMS " << capture_att
             << " deg; at arrival: position RMS " << arrival_pos * 1e3 << " mm, attitude RMS " << arrival_att
-            << " deg, gated " << at_arrival.counters().rejectedFor(Rejection::kVioGated) << " of "
+            << " deg, gated " << at_arrival.counters().vioRejected(RejectReason::kGated) << " of "
             << arrival.vio_outcomes.size() << "\n";
   RecordProperty("capture_vs_arrival_position_rms_mm",
                  std::to_string(capture_pos * 1e3) + " vs " + std::to_string(arrival_pos * 1e3));

@@ -96,7 +96,7 @@ TEST(EstimatorVioReset, APersistentVioFrameJumpResetsTheFilterWithinTheConfigure
   EXPECT_GE(reset_after_jump, params.vio_reset_after);
   EXPECT_LE(reset_after_jump, params.vio_reset_after + 1.0 / 30.0 + 0.002);  // the next frame after it
   EXPECT_EQ(gated_before_reset, reset - first_jumped);  // every jumped pose until then
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioGated), gated_before_reset);
+  EXPECT_EQ(estimator.counters().vioRejected(RejectReason::kGated), gated_before_reset);
   EXPECT_EQ(run.countStatus(EstimatorStatus::kVioTimeout), 0);
   // AND the filter follows the new frame with the usual accuracy, its velocity undisturbed: a
   // frame jump carries no velocity error, and the run's drift (noise, ~0.035 m/s per axis) is
@@ -125,7 +125,7 @@ TEST(EstimatorVioReset, ASingleOutlierIsStillGatedAndCausesNoReset) {
   const RunResult reference = runEstimator(clean, sensors, events);
 
   // THEN that pose is gated, the next is fused again, and nothing else changes
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioGated), 1);
+  EXPECT_EQ(estimator.counters().vioRejected(RejectReason::kGated), 1);
   EXPECT_EQ(estimator.counters().vio_resets, 0);
   EXPECT_EQ(estimator.counters().vio_fused, clean.counters().vio_fused - 1);
   EXPECT_LT(run.positionRms(8.0, 12.0), 1.1 * reference.positionRms(8.0, 12.0));
@@ -152,10 +152,10 @@ TEST(EstimatorVioReset, OutliersThatDisagreeWithOneAnotherNeverReset) {
 
   // THEN every garbage pose is gated, none causes a reset, and the good poses afterwards are
   // fused again (the gap is shorter than reinit_after) with the usual accuracy regained
-  std::cout << "[ measured ] " << garbage << " garbage poses, " << estimator.counters().rejectedFor(Rejection::kVioGated)
+  std::cout << "[ measured ] " << garbage << " garbage poses, " << estimator.counters().vioRejected(RejectReason::kGated)
             << " gated; position RMS from 1.2 s after the burst " << run.positionRms(10.0, 12.0) * 1e3 << " mm\n";
   EXPECT_GE(garbage, 20);
-  EXPECT_EQ(estimator.counters().rejectedFor(Rejection::kVioGated), garbage);
+  EXPECT_EQ(estimator.counters().vioRejected(RejectReason::kGated), garbage);
   EXPECT_EQ(estimator.counters().vio_resets, 0);
   EXPECT_EQ(estimator.counters().initializations, 1);
   EXPECT_EQ(poses.count(run, VioOutcome::kRejected, 8'800'000, 12'000'000), 0);

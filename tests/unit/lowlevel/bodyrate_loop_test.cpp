@@ -47,10 +47,10 @@ class LoopTest : public ::testing::Test {
     c.command = type;
     return loop.handleCommand(c);
   }
-  int64_t rejected(RateCommandReject reason) const {
+  int64_t rateRejected(RejectReason reason) const {
     return loop.counters().rate_cmd_rejected[static_cast<size_t>(reason)];
   }
-  int64_t rejected(ImuReject reason) const { return loop.counters().imu_rejected[static_cast<size_t>(reason)]; }
+  int64_t imuRejected(RejectReason reason) const { return loop.counters().imu_rejected[static_cast<size_t>(reason)]; }
 };
 
 TEST_F(LoopTest, StartsDisarmedWithZeroThrustStampedWithTheSample) {
@@ -83,10 +83,10 @@ TEST_F(LoopTest, IdleSpinsTheRotorsAtIdleThrustAndWaitsWithoutFailsafe) {
 
 TEST_F(LoopTest, FreshRateCommandAfterArmingStartsRateMode) {
   tick();
-  ASSERT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime)), RateCommandReject::kNone);
+  ASSERT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime)), RejectReason::kNone);
   command(CommandType::kArm);
   EXPECT_EQ(tick().mode, MotorMode::kIdle);  // the command before arming does not count
-  ASSERT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime)), RateCommandReject::kNone);
+  ASSERT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime)), RejectReason::kNone);
   const MotorCommand out = tick();
   EXPECT_EQ(out.mode, MotorMode::kRate);
   EXPECT_NEAR(out.thrust.sum(), vehicle.mass * 9.81, 0.05);
@@ -140,29 +140,28 @@ TEST_F(LoopTest, RateModeTimesOutIntoFailsafe) {
 }
 
 TEST_F(LoopTest, InvalidRateCommandsAreRejectedAndCounted) {
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime)), RateCommandReject::kNoClock);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime)), RejectReason::kNoClock);
   tick();
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3(kNan, 0, 0), 9.81, utime)), RateCommandReject::kNonFinite);
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), kInf, utime)), RateCommandReject::kNonFinite);
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3(0, -25.0, 0), 9.81, utime)), RateCommandReject::kRateLimit);
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), -0.1, utime)), RateCommandReject::kThrustRange);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3(kNan, 0, 0), 9.81, utime)), RejectReason::kNonFinite);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), kInf, utime)), RejectReason::kNonFinite);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3(0, -25.0, 0), 9.81, utime)), RejectReason::kOutOfRange);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), -0.1, utime)), RejectReason::kOutOfRange);
   const double max_thrust = 4.0 * vehicle.max_rotor_thrust / vehicle.mass;
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), max_thrust + 0.1, utime)), RateCommandReject::kThrustRange);
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime + 500'000)), RateCommandReject::kFuture);
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime - 500'000)), RateCommandReject::kStale);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), max_thrust + 0.1, utime)), RejectReason::kOutOfRange);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime + 500'000)), RejectReason::kTimeFuture);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime - 500'000)), RejectReason::kStale);
   EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, std::numeric_limits<int64_t>::max())),
-            RateCommandReject::kFuture);
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), max_thrust, utime)), RateCommandReject::kNone);
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime - 1000)), RateCommandReject::kTimeBackwards);
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime)), RateCommandReject::kNone);  // same time is fine
+            RejectReason::kTimeFuture);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), max_thrust, utime)), RejectReason::kNone);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime - 1000)), RejectReason::kTimeBackwards);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), 9.81, utime)), RejectReason::kNone);  // same time is fine
 
-  EXPECT_EQ(rejected(RateCommandReject::kNoClock), 1);
-  EXPECT_EQ(rejected(RateCommandReject::kNonFinite), 2);
-  EXPECT_EQ(rejected(RateCommandReject::kRateLimit), 1);
-  EXPECT_EQ(rejected(RateCommandReject::kThrustRange), 2);
-  EXPECT_EQ(rejected(RateCommandReject::kFuture), 2);
-  EXPECT_EQ(rejected(RateCommandReject::kStale), 1);
-  EXPECT_EQ(rejected(RateCommandReject::kTimeBackwards), 1);
+  EXPECT_EQ(rateRejected(RejectReason::kNoClock), 1);
+  EXPECT_EQ(rateRejected(RejectReason::kNonFinite), 2);
+  EXPECT_EQ(rateRejected(RejectReason::kOutOfRange), 3);
+  EXPECT_EQ(rateRejected(RejectReason::kTimeFuture), 2);
+  EXPECT_EQ(rateRejected(RejectReason::kStale), 1);
+  EXPECT_EQ(rateRejected(RejectReason::kTimeBackwards), 1);
   EXPECT_EQ(loop.counters().rate_cmd_accepted, 2);
 }
 
@@ -184,27 +183,27 @@ TEST_F(LoopTest, InvalidImuSamplesAreRejectedCountedAndChangeNothing) {
   bad.utime = utime + 1000;
   bad.gyro.y() = kNan;
   MotorCommand out = loop.step(bad);
-  EXPECT_EQ(loop.lastImuReject(), ImuReject::kNonFinite);
+  EXPECT_EQ(loop.lastImuReject(), RejectReason::kNonFinite);
   EXPECT_EQ(out.seq, first.seq);  // the previous command, untouched
   bad = restingSample();
   bad.utime = utime + 1000;
   bad.accel.x() = 1e4;
   loop.step(bad);
-  EXPECT_EQ(loop.lastImuReject(), ImuReject::kOutOfRange);
+  EXPECT_EQ(loop.lastImuReject(), RejectReason::kOutOfRange);
   bad = restingSample();
   bad.utime = utime;  // not newer
   loop.step(bad);
-  EXPECT_EQ(loop.lastImuReject(), ImuReject::kTimeBackwards);
+  EXPECT_EQ(loop.lastImuReject(), RejectReason::kTimeBackwards);
   bad.utime = utime + 5'000'000;
   loop.step(bad);
-  EXPECT_EQ(loop.lastImuReject(), ImuReject::kTimeJump);
-  EXPECT_EQ(rejected(ImuReject::kNonFinite), 1);
-  EXPECT_EQ(rejected(ImuReject::kOutOfRange), 1);
-  EXPECT_EQ(rejected(ImuReject::kTimeBackwards), 1);
-  EXPECT_EQ(rejected(ImuReject::kTimeJump), 1);
+  EXPECT_EQ(loop.lastImuReject(), RejectReason::kTimeGap);
+  EXPECT_EQ(imuRejected(RejectReason::kNonFinite), 1);
+  EXPECT_EQ(imuRejected(RejectReason::kOutOfRange), 1);
+  EXPECT_EQ(imuRejected(RejectReason::kTimeBackwards), 1);
+  EXPECT_EQ(imuRejected(RejectReason::kTimeGap), 1);
   EXPECT_EQ(loop.counters().imu_accepted, 1);
   tick();
-  EXPECT_EQ(loop.lastImuReject(), ImuReject::kNone);
+  EXPECT_EQ(loop.lastImuReject(), RejectReason::kNone);
   EXPECT_EQ(loop.counters().imu_accepted, 2);
 }
 
@@ -214,13 +213,13 @@ TEST_F(LoopTest, RestartedClockIsAdoptedAfterARunOfRejects) {
   int rejected_samples = 0;
   while (rejected_samples < 1000) {
     tick();
-    if (loop.lastImuReject() == ImuReject::kNone) break;
+    if (loop.lastImuReject() == RejectReason::kNone) break;
     ++rejected_samples;
   }
   EXPECT_EQ(rejected_samples, 99);
   EXPECT_EQ(loop.counters().imu_resyncs, 1);
   tick();
-  EXPECT_EQ(loop.lastImuReject(), ImuReject::kNone);
+  EXPECT_EQ(loop.lastImuReject(), RejectReason::kNone);
 }
 
 TEST_F(LoopTest, MassUpdateScalesTheCollectiveAndRejectsNonsense) {

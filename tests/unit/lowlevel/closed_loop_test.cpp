@@ -13,7 +13,7 @@
 namespace sdlqr::test {
 namespace {
 
-using lowlevel::RateCommandReject;
+using sdlqr::RejectReason;
 
 constexpr double kDeg = M_PI / 180.0;
 
@@ -244,7 +244,7 @@ TEST(Failsafe, FreshRateCommandReturnsToRateMode) {
   ASSERT_EQ(h.loop.mode(), MotorMode::kFailsafe);
   const double height_in_failsafe = h.plant.position.z();
   // The restarted controller publishes again.
-  ASSERT_EQ(h.loop.setRateCommand(holdPosition(h.plant, Vec3(0.0, 0.0, 3.0), h.utime)), RateCommandReject::kNone);
+  ASSERT_EQ(h.loop.setRateCommand(holdPosition(h.plant, Vec3(0.0, 0.0, 3.0), h.utime)), RejectReason::kNone);
   h.tick();
   EXPECT_EQ(h.loop.mode(), MotorMode::kRate);
   EXPECT_EQ(h.loop.counters().failsafe_recoveries, 1);
@@ -274,7 +274,7 @@ TEST(Failsafe, StaleCommandsDoNotKeepTheLoopInRateMode) {
   EXPECT_EQ(h.loop.mode(), MotorMode::kFailsafe);
   EXPECT_GT(engaged_after_ms, 0);
   EXPECT_LE(engaged_after_ms, 200);
-  EXPECT_GT(h.loop.counters().rate_cmd_rejected[static_cast<size_t>(RateCommandReject::kStale)], 0);
+  EXPECT_GT(h.loop.counters().rate_cmd_rejected[static_cast<size_t>(RejectReason::kStale)], 0);
 }
 
 TEST(Landing, ControllerLandingAutoDisarmsOnTheGround) {

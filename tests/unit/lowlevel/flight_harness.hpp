@@ -58,7 +58,7 @@ class FlightHarness {
     loop.handleCommand(command);
   }
 
-  lowlevel::RateCommandReject sendRate(const Vec3& rate, double thrust) {
+  RejectReason sendRate(const Vec3& rate, double thrust) {
     RateCommand command;
     command.utime = utime;
     command.body_rate = rate;

@@ -71,7 +71,7 @@ TEST(Ground, ExternalUpwardForceLiftsAGroundedVehicle) {
   Disturbance lift;
   lift.force = Vec3(0, 0, 1.5 * v.mass * kDefaultGravity);
   lift.duration = 0.2;
-  ASSERT_EQ(sim.addDisturbance(lift), DisturbanceFault::kNone);
+  ASSERT_EQ(sim.addDisturbance(lift), RejectReason::kNone);
   sim.step();
   EXPECT_FALSE(sim.onGround());
   EXPECT_GT(sim.body().position.z(), 0.0);

@@ -126,7 +126,7 @@ TEST(Physics, PitchTorqueDisturbanceGivesTorqueOverInertia) {
   Disturbance d;
   d.torque = Vec3(0.0, -0.004, 0.0);
   d.duration = 1.0;
-  ASSERT_EQ(sim.addDisturbance(d), DisturbanceFault::kNone);
+  ASSERT_EQ(sim.addDisturbance(d), RejectReason::kNone);
   runFor(sim, 0.1);
   EXPECT_NEAR(sim.body().body_rate.y(), -0.004 / v.inertia_diag.y() * 0.1, 1e-9);
 }
@@ -152,7 +152,7 @@ TEST(Physics, SaturationClampsEachRotor) {
   v.min_rotor_thrust = 0.1;
   Simulator sim(v, idealParams());
   // Above max on rotor 0, below min on rotor 1, within range on rotors 2 and 3.
-  ASSERT_EQ(sim.setMotorCommand(armed(Vec4(2.0, 0.0, 0.5, 0.9))), MotorCommandFault::kNone);
+  ASSERT_EQ(sim.setMotorCommand(armed(Vec4(2.0, 0.0, 0.5, 0.9))), RejectReason::kNone);
   runFor(sim, 0.5);
   const Vec4 thrust = sim.rotorThrust();
   EXPECT_NEAR(thrust[0], v.max_rotor_thrust, 1e-6);
@@ -194,7 +194,7 @@ TEST(Physics, DisturbanceForceMovesTheVehicleForItsDurationOnly) {
   pull.start_utime = 100000;
   pull.duration = 0.3;
   pull.force = Vec3(0.51, 0.0, 0.0);
-  ASSERT_EQ(sim.addDisturbance(pull), DisturbanceFault::kNone);
+  ASSERT_EQ(sim.addDisturbance(pull), RejectReason::kNone);
   const double a = pull.force.x() / v.mass;  // 2 m/s^2
   // WHEN time passes
   runFor(sim, 0.1);
@@ -223,7 +223,7 @@ TEST(Physics, HoldDisturbanceSettlesWhereTheSpringCarriesTheWeight) {
   hold.hold_position = Vec3(0, 0, 3.0);
   hold.hold_stiffness = 50.0;
   hold.hold_damping = 5.0;
-  ASSERT_EQ(sim.addDisturbance(hold), DisturbanceFault::kNone);
+  ASSERT_EQ(sim.addDisturbance(hold), RejectReason::kNone);
   runFor(sim, 10.0);
   // THEN it hangs m g / k below the anchor, at rest
   const double sag = v.mass * kDefaultGravity / hold.hold_stiffness;

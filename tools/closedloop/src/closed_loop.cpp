@@ -1,7 +1,5 @@
 #include "sdlqr/closedloop/closed_loop.hpp"
 
-#include "sdlqr/mission/trajectory_request.hpp"
-
 namespace sdlqr::closedloop {
 
 StackConfig StackConfig::load(const std::string& vehicle_file) {
@@ -15,6 +13,7 @@ StackConfig StackConfig::load(const std::string& vehicle_file) {
   c.controller = controller::ControllerParams::load(root.child("controller"));
   c.gains = gains::GainsParams::load(root.child("gains"));
   c.trajectory = trajectory::TrajectoryParams::load(root.child("trajectory"));
+  c.faults = FaultParams::load(root.child("faults"));
   return c;
 }
 
@@ -25,111 +24,104 @@ sim::SimParams withSeed(sim::SimParams params, long long seed) {
   return params;
 }
 
+mission::MissionOptions missionOptions(double command_resend_s) {
+  mission::MissionOptions options;
+  options.resend_interval_s = command_resend_s;
+  return options;
+}
+
 }  // namespace
 
-ClosedLoop::ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record)
-    : config_(config),
-      scenario_(scenario),
-      record_(record),
+ClosedLoop::ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record,
+                       double command_resend_s)
+    : record_(record),
       sim_(config.vehicle, withSeed(config.sim, scenario.seed)),
       estimator_(config.estimator),
-      lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity),
-      controller_(config.lqr, config.controller),
-      gains_(config.lqr, config.gains.rate_hz),
-      player_(scenario_),
-      trajectories_(scenario.events.size()) {
-  for (size_t i = 0; i < scenario.events.size(); ++i) {
-    if (scenario.events[i].kind == mission::ScenarioEvent::Kind::kTrajectory) {
-      trajectories_[i] = mission::buildTrajectory(scenario.events[i].trajectory, config.trajectory, config.lqr,
-                                                  "events[" + std::to_string(i) + "].trajectory");
-    }
-  }
-}
-
-void ClosedLoop::play(const mission::ScenarioEvent& event, size_t index) {
-  const int64_t now = sim_.utime();
-  switch (event.kind) {
-    case mission::ScenarioEvent::Kind::kCommand: {
-      Command command = event.command;
-      command.utime = now;
-      command.seq = command_seq_++;
-      record(log_.command, command);
-      lowlevel_.handleCommand(command);
-      controller_.handleCommand(command);
-      break;
-    }
-    case mission::ScenarioEvent::Kind::kDisturbance: {
-      Disturbance disturbance = event.disturbance;
-      disturbance.utime = now;
-      disturbance.start_utime = now;
-      disturbance.seq = disturbance_seq_++;
-      record(log_.disturbance, disturbance);
-      sim_.addDisturbance(disturbance);
-      break;
-    }
-    case mission::ScenarioEvent::Kind::kParams: {
-      ParamsUpdate params = event.params;
-      params.utime = now;
-      params.seq = params_seq_++;
-      record(log_.params, params);
-      gains_.applyParams(params);
-      controller_.applyParams(params);
-      if (params.field_mask & ParamsUpdate::kMass) lowlevel_.setMass(params.mass);
-      break;
-    }
-    case mission::ScenarioEvent::Kind::kTrajectory: {
-      Trajectory trajectory = trajectories_[index];
-      trajectory.utime = now;
-      trajectory.start_utime = now;
-      trajectory.seq = trajectory_seq_++;
-      record(log_.trajectory, trajectory);
-      controller_.setTrajectory(trajectory);
-      break;
-    }
-  }
-}
+      lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity, config.faults, config.limits),
+      controller_(config.lqr, config.controller, config.faults, config.limits),
+      gains_(config.lqr, config.gains, config.faults, config.limits),
+      mission_(scenario, config.trajectory, config.lqr, missionOptions(command_resend_s)) {}
 
 bool ClosedLoop::step() {
-  if (player_.finished(sim_.utime())) return false;
-  const sim::StepOutput out = sim_.step();
-  if (out.truth) record(log_.sim_truth, *out.truth);
-  if (out.vio) {
-    record(log_.vio_pose, *out.vio);
-    estimator_.onVio(*out.vio);
-  }
-  if (!out.imu) return true;
-  const ImuSample& imu = *out.imu;
-  if (record_.imu) record(log_.imu, imu);
-  while (const mission::ScenarioEvent* event = player_.nextDue(imu.utime)) {
-    play(*event, static_cast<size_t>(event - scenario_.events.data()));
-  }
-
-  const MotorCommand motors = lowlevel_.step(imu);
-  sim_.setMotorCommand(motors);
-  if (record_.motor_command) record(log_.motor_command, motors);
-
-  const std::optional<StateEstimate> estimate = estimator_.onImu(imu);
-  if (!estimate) return true;
-  record(log_.state_estimate, *estimate);
-  if (gains_.due(*estimate)) {
-    GainSet gains;
-    if (gains_.solve(*estimate, gains) == SolveStatus::kOk) {
-      record(log_.gains, gains);
-      controller_.setGains(gains);
-    }
-  }
-  if (controller_.onStateEstimate(*estimate, tick_)) {
-    record(log_.rate_command, tick_.command);
-    record(log_.reference, tick_.reference);
-    lowlevel_.setRateCommand(tick_.command);
-    gains_.setReference(tick_.reference);
-  }
+  if (mission_.finished()) return false;
+  const double now_s = 1e-6 * static_cast<double>(utime());
+  controller_.onWallTime(now_s);
+  gains_.onWallTime(now_s);
+  lowlevel_.onWallTime(now_s);
+  sim_.step(*this);
   return true;
 }
 
 void ClosedLoop::run() {
   while (step()) {
   }
+}
+
+void ClosedLoop::publish(const SimTruth& m) { record(log_.sim_truth, m); }
+
+void ClosedLoop::publish(const VioPose& m) {
+  record(log_.vio_pose, m);
+  estimator_.onVio(m);
+}
+
+// The mission plays what is due at this sample before the bodyrate loop steps on it.
+void ClosedLoop::publish(const ImuSample& m) {
+  if (record_.imu) record(log_.imu, m);
+  lowlevel_.onImu(m, *this);
+  estimator_.onImu(m, *this);
+}
+
+// The scenario player's clock, after the step's IMU sample, as on the bus.
+void ClosedLoop::publish(const SimClockTick& m) { mission_.onClock(m.utime, *this); }
+
+void ClosedLoop::publish(const MotorCommand& m) {
+  if (record_.motor_command) record(log_.motor_command, m);
+  sim_.onMotorCommand(m);
+}
+
+// The solver first: its GAINS reach the controller before the tick of the same estimate.
+void ClosedLoop::publish(const StateEstimate& m) {
+  record(log_.state_estimate, m);
+  gains_.onStateEstimate(m, *this);
+  controller_.onStateEstimate(m, *this);
+}
+
+void ClosedLoop::publish(const GainSet& m) {
+  record(log_.gains, m);
+  controller_.onGains(m);
+}
+
+void ClosedLoop::publish(const RateCommand& m) {
+  record(log_.rate_command, m);
+  lowlevel_.onRateCommand(m);
+}
+
+void ClosedLoop::publish(const Reference& m) {
+  record(log_.reference, m);
+  gains_.onReference(m);
+}
+
+void ClosedLoop::publish(const Command& m) {
+  record(log_.command, m);
+  lowlevel_.onCommand(m);
+  controller_.onCommand(m);
+}
+
+void ClosedLoop::publish(const Disturbance& m) {
+  record(log_.disturbance, m);
+  sim_.onDisturbance(m);
+}
+
+void ClosedLoop::publish(const ParamsUpdate& m) {
+  record(log_.params, m);
+  gains_.onParams(m);
+  controller_.onParams(m);
+  lowlevel_.onParams(m);
+}
+
+void ClosedLoop::publish(const Trajectory& m) {
+  record(log_.trajectory, m);
+  controller_.onTrajectory(m);
 }
 
 }  // namespace sdlqr::closedloop

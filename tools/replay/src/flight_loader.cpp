@@ -1,5 +1,7 @@
 #include "sdlqr/replay/flight_loader.hpp"
 
+#include "sdlqr/bus/convert.hpp"
+#include "sdlqr/bus/decode.hpp"
 #include "sdlqr/logger/channel_types.hpp"
 #include "sdlqr/logger/decode.hpp"
 #include "sdlqr/logger/log_reader.hpp"
@@ -20,10 +22,24 @@ bool append(const logger::LogEvent& event, std::vector<T>& series, LoadStats* st
   return true;
 }
 
+// An input of a process the replay recomputes: decoded by the bus's own step, and when that
+// refuses it, kept as an undecodable input the cores count as the bus did.
 template <class T>
-void appendInput(const logger::LogEvent& event, InputKind kind, std::vector<T>& series, RecordedFlight& flight,
-                 LoadStats* stats) {
-  if (append(event, series, stats)) flight.order.push_back({kind, static_cast<int32_t>(series.size() - 1)});
+void appendInput(const logger::LogEvent& event, const std::string& base, InputKind kind, std::vector<T>& series,
+                 RecordedFlight& flight, LoadStats* stats) {
+  bus::LcmOf<T> message;
+  const RejectReason reason =
+      event.size > UINT32_MAX ? RejectReason::kBadSize : bus::decode(event.data, static_cast<uint32_t>(event.size), message);
+  if (reason != RejectReason::kNone) {
+    ++stats->decode_failures;
+    const int64_t utime = flight.order.empty() ? 0 : flight.utimeAt(flight.order.back());
+    flight.undecodable.push_back({utime, streamOfChannel(base), reason});
+    flight.order.push_back({InputKind::kUndecodable, static_cast<int32_t>(flight.undecodable.size() - 1)});
+    return;
+  }
+  series.push_back(bus::fromLcm(message));
+  ++stats->used;
+  flight.order.push_back({kind, static_cast<int32_t>(series.size() - 1)});
 }
 
 }  // namespace
@@ -40,19 +56,19 @@ RecordedFlight loadRecordedFlight(const std::string& path, const std::string& ve
     const logger::ChannelType* type = logger::findChannelType(name.base);
     if (type == nullptr) continue;
     switch (type->type) {
-      case logger::MessageType::kImu: appendInput(event, InputKind::kImu, flight.imu, flight, stats); break;
-      case logger::MessageType::kVioPose: appendInput(event, InputKind::kVioPose, flight.vio_pose, flight, stats); break;
+      case logger::MessageType::kImu: appendInput(event, name.base, InputKind::kImu, flight.imu, flight, stats); break;
+      case logger::MessageType::kVioPose: appendInput(event, name.base, InputKind::kVioPose, flight.vio_pose, flight, stats); break;
       case logger::MessageType::kStateEstimate:
-        appendInput(event, InputKind::kStateEstimate, flight.state_estimate, flight, stats);
+        appendInput(event, name.base, InputKind::kStateEstimate, flight.state_estimate, flight, stats);
         break;
-      case logger::MessageType::kCommand: appendInput(event, InputKind::kCommand, flight.command, flight, stats); break;
+      case logger::MessageType::kCommand: appendInput(event, name.base, InputKind::kCommand, flight.command, flight, stats); break;
       case logger::MessageType::kTrajectory:
-        appendInput(event, InputKind::kTrajectory, flight.trajectory, flight, stats);
+        appendInput(event, name.base, InputKind::kTrajectory, flight.trajectory, flight, stats);
         break;
-      case logger::MessageType::kParams: appendInput(event, InputKind::kParams, flight.params, flight, stats); break;
+      case logger::MessageType::kParams: appendInput(event, name.base, InputKind::kParams, flight.params, flight, stats); break;
       case logger::MessageType::kRateCommand: append(event, flight.rate_command, stats); break;
       case logger::MessageType::kReference: append(event, flight.reference, stats); break;
-      case logger::MessageType::kGains: append(event, flight.gains, stats); break;
+      case logger::MessageType::kGains: appendInput(event, name.base, InputKind::kGains, flight.gains, flight, stats); break;
       default: break;
     }
   }

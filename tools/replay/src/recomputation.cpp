@@ -14,6 +14,8 @@ int64_t RecordedFlight::utimeAt(const LogPosition& p) const {
     case InputKind::kCommand: return command[i].utime;
     case InputKind::kTrajectory: return trajectory[i].utime;
     case InputKind::kParams: return params[i].utime;
+    case InputKind::kGains: return gains[i].utime;
+    case InputKind::kUndecodable: return undecodable[i].utime;
   }
   return 0;
 }
@@ -31,6 +33,7 @@ const estimator::EstimatorParams& checked(const ReplayParams& p) {
   if (!p.lqr.valid()) throw std::invalid_argument("lqr: " + p.lqr.invalidReason());
   if (!p.controller.valid()) throw std::invalid_argument("controller: " + p.controller.invalidReason());
   if (!p.gains.valid()) throw std::invalid_argument("gains: " + p.gains.invalidReason());
+  if (!p.faults.valid()) throw std::invalid_argument("faults: " + p.faults.invalidReason());
   return p.estimator;
 }
 
@@ -39,10 +42,11 @@ const estimator::EstimatorParams& checked(const ReplayParams& p) {
 Recomputation::Recomputation(const ReplayParams& params, const RecordedFlight& flight)
     : flight_(flight),
       estimator_(checked(params)),
-      scheduler_(params.lqr, params.gains.rate_hz),
+      gains_(params.lqr, params.gains, params.faults, params.limits),
       solve_period_us_(static_cast<int64_t>(1e6 / params.gains.rate_hz + 0.5)),
-      controller_(params.lqr, params.controller),
+      controller_(params.lqr, params.controller, params.faults, params.limits),
       tick_period_us_(static_cast<int64_t>(1e6 / params.controller.rate_hz + 0.5)),
+      command_delivered_(flight.command.size(), false),
       recorded_gains_(indexBySeq(flight.gains)),
       recorded_reference_(indexBySeq(flight.reference)),
       recorded_estimate_(indexBySeq(flight.state_estimate)) {}
@@ -50,50 +54,98 @@ Recomputation::Recomputation(const ReplayParams& params, const RecordedFlight& f
 void Recomputation::step() {
   const LogPosition p = flight_.order[next_++];
   const auto i = static_cast<std::size_t>(p.index);
+  feedWallTime(flight_.utimeAt(p));
   switch (p.kind) {
-    case InputKind::kImu: onImu(flight_.imu[i]); break;
+    case InputKind::kImu: estimator_.onImu(flight_.imu[i], outbox_); break;
     case InputKind::kVioPose: estimator_.onVio(flight_.vio_pose[i]); break;
-    case InputKind::kStateEstimate: onRecordedEstimate(flight_.state_estimate[i].seq); break;
+    case InputKind::kStateEstimate: onRecordedEstimate(flight_.state_estimate[i]); break;
     case InputKind::kCommand: heard_commands_.push_back(i); break;
-    case InputKind::kTrajectory: onTrajectory(flight_.trajectory[i]); break;
+    case InputKind::kTrajectory: controller_.onTrajectory(flight_.trajectory[i]); break;
     case InputKind::kParams: onParams(flight_.params[i]); break;
+    case InputKind::kGains: onRecordedGains(flight_.gains[i]); break;
+    case InputKind::kUndecodable: onUndecodable(flight_.undecodable[i]); break;
   }
+  updateRejected();
 }
 
 void Recomputation::finish() {
   for (const auto& [seq, estimate] : waiting_) handOver(estimate);
   waiting_.clear();
-  for (std::size_t i : heard_commands_) applyCommand(flight_.command[i]);
+  for (std::size_t i : heard_commands_) applyCommand(i);
   heard_commands_.clear();
+  updateRejected();
 }
 
-bool Recomputation::rejected(RejectReason reason) {
-  if (reason == RejectReason::kNone) return false;
-  ++pairing_.rejected;
-  return true;
+// Wall time is simulation time in the replay: the watchdogs see the recorded stream's pace.
+void Recomputation::feedWallTime(int64_t utime) {
+  const double now_s = 1e-6 * static_cast<double>(utime);
+  gains_.onWallTime(now_s);
+  controller_.onWallTime(now_s);
 }
 
-// sdlqr-estimator: every IMU sample, the estimate published unless non-finite.
-void Recomputation::onImu(const ImuSample& sample) {
-  const std::optional<StateEstimate> estimate = estimator_.onImu(sample);
-  if (!estimate || !estimate->state().allFinite() || !estimate->body_rate.allFinite()) return;
-  outputs_.state_estimate.push_back(*estimate);
-  if (estimate->seq <= handed_over_up_to_) {
+void Recomputation::updateRejected() {
+  pairing_.rejected = estimator_.health().rejected() + gains_.health().rejected() + controller_.health().rejected();
+  pairing_.solve_failures = gains_.health().errors();
+}
+
+// sdlqr-estimator published it: it waits for the place of the recorded STATE_EST of its seq.
+void Recomputation::onEstimate(const StateEstimate& estimate) {
+  outputs_.state_estimate.push_back(estimate);
+  last_recomputed_seq_ = estimate.seq;
+  last_recomputed_utime_ = estimate.utime;
+  if (estimate.seq <= handed_over_up_to_) {
     ++pairing_.estimates_without_record;  // its place in the log has passed (or never was)
-    handOver(*estimate);
+    handOver(estimate);
   } else {
-    waiting_.emplace(estimate->seq, *estimate);
+    waiting_.emplace(estimate.seq, estimate);
   }
 }
 
-// The recorded STATE_EST marks where the controller and the solver received this seq.
-void Recomputation::onRecordedEstimate(int64_t seq) {
-  handed_over_up_to_ = std::max(handed_over_up_to_, seq);
-  while (!waiting_.empty() && waiting_.begin()->first <= seq) {
+// The recorded STATE_EST marks where the controller and the solver received this seq. One the
+// replay did not compute (a forged, replayed or foreign estimate) reached them as it was.
+void Recomputation::onRecordedEstimate(const StateEstimate& recorded) {
+  const auto ours = waiting_.find(recorded.seq);
+  if ((ours == waiting_.end() || ours->second.utime != recorded.utime) && !aheadOfItsImu(recorded)) {
+    ++pairing_.foreign_estimates;
+    gains_.onStateEstimate(recorded, outbox_);
+    controller_.onStateEstimate(recorded, outbox_);
+    return;
+  }
+  handed_over_up_to_ = std::max(handed_over_up_to_, recorded.seq);
+  while (!waiting_.empty() && waiting_.begin()->first <= recorded.seq) {
     const StateEstimate estimate = waiting_.begin()->second;
     waiting_.erase(waiting_.begin());
     handOver(estimate);
   }
+}
+
+// On two cores the recorder may hear an estimate before the IMU sample that completed it (each
+// CPU delivers its own multicast backlog): the next seq or the one after, a little later than
+// the newest recomputed estimate, is that, and takes its place when it is recomputed.
+bool Recomputation::aheadOfItsImu(const StateEstimate& recorded) const {
+  constexpr int64_t kMaxAheadUs = 50'000;
+  return recorded.seq > last_recomputed_seq_ && recorded.seq <= last_recomputed_seq_ + 2 &&
+         recorded.utime > last_recomputed_utime_ && recorded.utime <= last_recomputed_utime_ + kMaxAheadUs;
+}
+
+// A recorded GAINS the replay did not solve (forged, or from another solver) reached the
+// controller on the bus: it is judged by the controller's core here too.
+void Recomputation::onRecordedGains(const GainSet& recorded) {
+  const auto ours = replayed_gains_.find(recorded.seq);
+  if (ours != replayed_gains_.end() && outputs_.gains[ours->second].utime == recorded.utime) return;
+  ++pairing_.foreign_gains;
+  controller_.onGains(recorded);
+}
+
+// Refused by the bus's decode step: counted by the cores subscribed to the channel, as on the bus.
+void Recomputation::onUndecodable(const UndecodableInput& input) {
+  const Stream stream = input.stream;
+  if (stream == Stream::kImu || stream == Stream::kVioPose) {
+    estimator_.health().reject(stream, input.reason);
+    return;
+  }
+  if (stream == Stream::kStateEstimate || stream == Stream::kParams) gains_.health().reject(stream, input.reason);
+  controller_.health().reject(stream, input.reason);  // STATE_EST, GAINS, COMMAND, TRAJECTORY, PARAMS
 }
 
 // The solver first: a solve at this estimate can only use references of earlier ticks (the
@@ -104,18 +156,30 @@ void Recomputation::handOver(const StateEstimate& estimate) {
   controllerOnEstimate(estimate);
 }
 
-// The GAINS a recorded tick names, recomputed if the replay has it, else as recorded.
+// The output of `seq` a recorded one names: recomputed if the replay has it (counted in
+// from_replay), else as recorded (from_record); nullptr if neither.
+template <class T>
+const T* Recomputation::named(int64_t seq, const SeqIndex& replayed, const std::vector<T>& replayed_series,
+                              const SeqIndex& recorded, const std::vector<T>& recorded_series, int64_t& from_replay,
+                              int64_t& from_record) {
+  if (auto it = replayed.find(seq); it != replayed.end()) {
+    ++from_replay;
+    return &replayed_series[it->second];
+  }
+  if (auto it = recorded.find(seq); it != recorded.end()) {
+    ++from_record;
+    return &recorded_series[it->second];
+  }
+  return nullptr;
+}
+
+// The GAINS a recorded tick names.
 void Recomputation::feedNamedGains(int64_t gains_seq) {
   if (gains_seq < 0 || gains_seq == fed_gains_seq_) return;
-  if (auto it = replayed_gains_.find(gains_seq); it != replayed_gains_.end()) {
-    controller_.setGains(outputs_.gains[it->second]);
-    ++pairing_.gains_from_replay;
-  } else if (auto rec = recorded_gains_.find(gains_seq); rec != recorded_gains_.end()) {
-    controller_.setGains(flight_.gains[rec->second]);
-    ++pairing_.gains_from_record;
-  } else {
-    return;
-  }
+  const GainSet* gains = named(gains_seq, replayed_gains_, outputs_.gains, recorded_gains_, flight_.gains,
+                               pairing_.gains_from_replay, pairing_.gains_from_record);
+  if (gains == nullptr) return;
+  controller_.onGains(*gains);
   fed_gains_seq_ = gains_seq;
 }
 
@@ -126,7 +190,7 @@ void Recomputation::feedNamedGains(int64_t gains_seq) {
 //  - the recorded tick is carried forward from the next estimate over a longer interval than
 //    the one from this estimate: the controller's previous estimate was older than this one.
 bool Recomputation::missedByController(const StateEstimate& estimate, const RateCommand& recorded) const {
-  const int64_t tick_utime = controller_.tickUtimeFor(estimate);
+  const int64_t tick_utime = controller_.lqr().tickUtimeFor(estimate);
   if (tick_utime >= 0) {
     const int64_t next_grid = (tick_utime / tick_period_us_ + 1) * tick_period_us_;
     return recorded.utime > tick_utime && recorded.utime < next_grid && recorded.state_seq > estimate.seq;
@@ -139,76 +203,76 @@ bool Recomputation::missedByController(const StateEstimate& estimate, const Rate
   return carried_forward && next_utime + (next_utime - estimate.utime) <= recorded.utime;
 }
 
-// sdlqr-controller's STATE_EST handler, with the GAINS of the next recorded tick fed first.
+// The controller's STATE_EST, with the GAINS of the next recorded tick fed first.
 void Recomputation::controllerOnEstimate(const StateEstimate& estimate) {
   deliverCommandsBefore(estimate);
-  RejectReason reason = validate(estimate, limits_);
-  if (reason == RejectReason::kNone) reason = controller_state_time_.check(estimate.utime, -1);
-  if (rejected(reason)) return;
-  controller_state_time_.accept(estimate.utime);
-
-  const std::vector<RateCommand>& ticks_ = flight_.rate_command;
+  const std::vector<RateCommand>& ticks = flight_.rate_command;
   // A tick is computed from estimate state_seq, carried forward, on the arrival of the next one.
-  while (next_tick_ < ticks_.size() && ticks_[next_tick_].state_seq < estimate.seq - 1) ++next_tick_;
-  if (next_tick_ < ticks_.size() && ticks_[next_tick_].state_seq <= estimate.seq) {
-    feedNamedGains(ticks_[next_tick_].gains_seq);
+  while (next_tick_ < ticks.size() && ticks[next_tick_].state_seq < estimate.seq - 1) ++next_tick_;
+  if (next_tick_ < ticks.size() && ticks[next_tick_].state_seq <= estimate.seq) {
+    feedNamedGains(ticks[next_tick_].gains_seq);
   }
   // The controller's STATE_EST queue holds one message: a busy controller misses estimates, and
   // a tick then comes later than the grid point (on the next estimate it did receive). An
   // estimate that would make a tick earlier than the recorded one was not received: skip it.
-  if (next_tick_ < ticks_.size() && missedByController(estimate, ticks_[next_tick_])) {
+  if (next_tick_ < ticks.size() && missedByController(estimate, ticks[next_tick_])) {
     ++pairing_.estimates_missed_by_controller;
     return;
   }
-  controller::StateDependentLqr::Tick tick;
-  if (!controller_.onStateEstimate(estimate, tick)) return;
-  replayed_reference_[tick.reference.seq] = outputs_.reference.size();
-  outputs_.rate_command.push_back(tick.command);
-  outputs_.reference.push_back(tick.reference);
-  while (next_tick_ < ticks_.size() && ticks_[next_tick_].seq <= tick.command.seq) ++next_tick_;
+  controller_.onStateEstimate(estimate, outbox_);
 }
 
-// sdlqr-gains' STATE_EST handler, with the REFERENCE the recorded solve names.
+void Recomputation::onOutput(const RateCommand& m) {
+  outputs_.rate_command.push_back(m);
+  const std::vector<RateCommand>& ticks = flight_.rate_command;
+  while (next_tick_ < ticks.size() && ticks[next_tick_].seq <= m.seq) ++next_tick_;
+}
+
+void Recomputation::onOutput(const Reference& m) {
+  replayed_reference_[m.seq] = outputs_.reference.size();
+  outputs_.reference.push_back(m);
+}
+
+// solve_us is the solver's wall time, measured by the process: not recomputed.
+void Recomputation::onOutput(const GainSet& m) {
+  replayed_gains_[m.seq] = outputs_.gains.size();
+  outputs_.gains.push_back(m);
+}
+
+// The solver's STATE_EST, with the REFERENCE the recorded solve names.
 void Recomputation::gainsOnEstimate(const StateEstimate& estimate) {
-  RejectReason reason = validate(estimate, limits_);
-  if (reason == RejectReason::kNone) reason = gains_state_time_.check(estimate.utime, -1);
-  if (rejected(reason)) return;
-  gains_state_time_.accept(estimate.utime);
-  if (estimate.status == EstimatorStatus::kInitializing) return;
-  const std::vector<GainSet>& solves = flight_.gains;
-  while (next_solve_ < solves.size() && solves[next_solve_].state_seq < estimate.seq) ++next_solve_;
-  // The solver solves on the first estimate it receives at or after each grid point; when the
-  // recorded solve names a later one, this estimate was lost in its one-message queue.
-  if (next_solve_ < solves.size() && solves[next_solve_].state_seq > estimate.seq &&
-      scheduler_.isDue(estimate) && solves[next_solve_].utime < (estimate.utime / solve_period_us_ + 1) * solve_period_us_) {
-    ++pairing_.estimates_missed_by_solver;
-    return;
-  }
-  if (!scheduler_.due(estimate)) return;
-  if (next_solve_ < solves.size() && solves[next_solve_].state_seq == estimate.seq) {
-    const int64_t reference_seq = solves[next_solve_].reference_seq;
-    if (auto it = replayed_reference_.find(reference_seq); it != replayed_reference_.end()) {
-      scheduler_.setReference(outputs_.reference[it->second]);
-      ++pairing_.references_from_replay;
-    } else if (auto rec = recorded_reference_.find(reference_seq); rec != recorded_reference_.end()) {
-      scheduler_.setReference(flight_.reference[rec->second]);
-      ++pairing_.references_from_record;
+  const gains::GainScheduler& scheduler = gains_.scheduler();
+  if (estimate.status != EstimatorStatus::kInitializing) {
+    const std::vector<GainSet>& solves = flight_.gains;
+    while (next_solve_ < solves.size() && solves[next_solve_].state_seq < estimate.seq) ++next_solve_;
+    // The solver solves on the first estimate it receives at or after each grid point; when the
+    // recorded solve names a later one, this estimate was lost in its one-message queue.
+    if (next_solve_ < solves.size() && solves[next_solve_].state_seq > estimate.seq && scheduler.isDue(estimate) &&
+        solves[next_solve_].utime < (estimate.utime / solve_period_us_ + 1) * solve_period_us_) {
+      ++pairing_.estimates_missed_by_solver;
+      return;
     }
-  } else {
-    ++pairing_.solves_unpaired;
+    if (scheduler.isDue(estimate)) feedNamedReference(estimate);
   }
-  GainSet gains;
-  if (scheduler_.solve(estimate, gains) != SolveStatus::kOk) {
-    ++pairing_.solve_failures;
+  gains_.onStateEstimate(estimate, outbox_);
+}
+
+void Recomputation::feedNamedReference(const StateEstimate& estimate) {
+  const std::vector<GainSet>& solves = flight_.gains;
+  if (next_solve_ >= solves.size() || solves[next_solve_].state_seq != estimate.seq) {
+    ++pairing_.solves_unpaired;
     return;
   }
-  // solve_us is the solver's wall time, measured by the process: not recomputed.
-  replayed_gains_[gains.seq] = outputs_.gains.size();
-  outputs_.gains.push_back(gains);
+  const Reference* reference =
+      named(solves[next_solve_].reference_seq, replayed_reference_, outputs_.reference, recorded_reference_,
+            flight_.reference, pairing_.references_from_replay, pairing_.references_from_record);
+  if (reference != nullptr) gains_.onReference(*reference);
 }
 
 // COMMAND and STATE_EST race on the bus like GAINS do: the REFERENCE of the tick computed from
-// this estimate names the last COMMAND the controller had handled.
+// this estimate names the last COMMAND the controller had handled. Every COMMAND heard so far up
+// to that one is delivered in log order (re-sends and replayed copies too: the core judges
+// them), then those the recorder heard later, up to the named one.
 void Recomputation::deliverCommandsBefore(const StateEstimate& estimate) {
   const std::vector<RateCommand>& ticks = flight_.rate_command;
   std::size_t t = next_tick_;
@@ -217,36 +281,35 @@ void Recomputation::deliverCommandsBefore(const StateEstimate& estimate) {
                              ? recorded_reference_.find(ticks[t].reference_seq)
                              : recorded_reference_.end();
   if (reference == recorded_reference_.end()) {  // no tick to say otherwise: the recorder's order
-    for (std::size_t i : heard_commands_) applyCommand(flight_.command[i]);
+    for (std::size_t i : heard_commands_) applyCommand(i);
     heard_commands_.clear();
     return;
   }
   const int64_t named = flight_.reference[reference->second].command_seq;
-  for (const Command& command : flight_.command) {  // in log order, also those heard later
-    if (command.seq > applied_command_seq_ && command.seq <= named) applyCommand(command);
+  for (std::size_t i : heard_commands_) {
+    if (flight_.command[i].seq <= named) applyCommand(i);
+  }
+  for (std::size_t i = 0; i < flight_.command.size(); ++i) {  // in log order, also those heard later
+    const int64_t seq = flight_.command[i].seq;
+    if (!command_delivered_[i] && seq > applied_command_seq_ && seq <= named) applyCommand(i);
   }
   heard_commands_.erase(std::remove_if(heard_commands_.begin(), heard_commands_.end(),
-                                       [&](std::size_t i) { return flight_.command[i].seq <= applied_command_seq_; }),
+                                       [&](std::size_t i) { return command_delivered_[i]; }),
                         heard_commands_.end());
 }
 
-// sdlqr-controller's COMMAND handler; a re-sent command (same seq) is handled once.
-void Recomputation::applyCommand(const Command& command) {
-  if (command.seq <= applied_command_seq_) return;
-  applied_command_seq_ = command.seq;
-  if (rejected(validate(command, limits_))) return;
-  controller_.handleCommand(command);
-}
-
-void Recomputation::onTrajectory(const Trajectory& trajectory) {
-  if (rejected(validate(trajectory, limits_))) return;
-  if (!controller_.setTrajectory(trajectory).empty()) ++pairing_.rejected;
+// Each recorded COMMAND reaches the controller's core once, at its delivery.
+void Recomputation::applyCommand(std::size_t index) {
+  if (command_delivered_[index]) return;
+  command_delivered_[index] = true;
+  const Command& command = flight_.command[index];
+  applied_command_seq_ = std::max(applied_command_seq_, command.seq);
+  controller_.onCommand(command);
 }
 
 void Recomputation::onParams(const ParamsUpdate& update) {
-  if (rejected(validate(update, limits_))) return;
-  controller_.applyParams(update);
-  if (!scheduler_.applyParams(update)) ++pairing_.rejected;
+  controller_.onParams(update);
+  gains_.onParams(update);
 }
 
 }  // namespace sdlqr::replay

@@ -21,7 +21,7 @@ class ReferenceGenerator {
  public:
   ReferenceGenerator(const ControllerParams& params, double gravity);
 
-  void handleCommand(const Command& command, const StateEstimate& latest);
+  void handleCommand(const Command& command);
   // Starts tracking a trajectory (copied once here, never in the 100 Hz path) if flying. Returns
   // an empty string when accepted, else why not.
   std::string setTrajectory(const Trajectory& trajectory, int64_t now_utime);
@@ -48,6 +48,7 @@ class ReferenceGenerator {
   double gravity_;
   FlightPhase phase_ = FlightPhase::kIdle;
   bool takeoff_pending_ = false;
+  bool landing_pending_ = false;  // LAND received: the ramp starts at the next tick
   double pending_takeoff_height_ = 1.0;
   Vec3 setpoint_ = Vec3::Zero();
   double yaw_ = 0.0;

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <optional>
 
+#include "sdlqr/health/reject_reason.hpp"
 #include "sdlqr/messages/messages.hpp"
 #include "sdlqr/estimator/error_state_ekf.hpp"
 #include "sdlqr/estimator/estimator_params.hpp"
@@ -22,36 +23,25 @@
 
 namespace sdlqr::estimator {
 
-enum class Rejection : int {
-  kImuNonFinite = 0,
-  kImuOutOfRange,
-  kImuTimeBackwards,   // utime not after the previous sample (includes duplicates)
-  kImuTimeGap,         // utime more than imu_max_gap after the previous sample
-  kVioNonFinite,
-  kVioBadQuaternion,   // | ||q|| - 1 | > quaternion_norm_tolerance
-  kVioBadStd,          // negative std
-  kVioOutOfOrder,      // capture time not after the last fused pose's
-  kVioTooOld,          // capture time older than the history
-  kVioFuture,          // capture time after the newest IMU sample
-  kVioGated,           // innovation beyond the chi-square gate
-  kVioSuperseded,      // a pending pose replaced by a newer one before it could be fused
-};
-inline constexpr int kRejectionCount = 12;
-static_assert(static_cast<int>(Rejection::kVioSuperseded) + 1 == kRejectionCount, "one counter per reason");
-// Counter name, e.g. "reject.vio.too_old".
-const char* counterName(Rejection reason);
-
 enum class VioOutcome {
   kFused,          // updated at the capture time, newer states recomputed
   kInitialized,    // first pose (or first after a long gap): the filter starts from it
   kPending,        // capture time inside the IMU window still being accumulated: fused when it closes
   kReset,          // gated, but gated poses have agreed with one another for vio_reset_after: the
                    // filter was wrong, and was reset to this pose (position, attitude, velocity)
-  kRejected,       // see counters() and lastRejection()
+  kRejected,       // see counters() and lastVioRejection()
 };
 
+// Rejections in the common vocabulary, per input stream. IMU: kNonFinite, kOutOfRange,
+// kTimeBackwards (utime not after the previous sample, duplicates included), kTimeGap (more than
+// imu_max_gap after it). VIO_POSE: kNonFinite, kQuaternionNorm (| ||q|| - 1 | above
+// quaternion_norm_tolerance), kOutOfRange (a negative std), kTimeBackwards (capture time not after
+// the last fused or pending pose's), kStale (older than the history), kTimeFuture (after the
+// newest IMU sample), kGated (innovation beyond the chi-square gate), kSuperseded (a pending pose
+// replaced by a newer one before it could be fused).
 struct EstimatorCounters {
-  std::array<int64_t, kRejectionCount> rejected{};
+  std::array<int64_t, kRejectReasonCount> imu_rejected{};
+  std::array<int64_t, kRejectReasonCount> vio_rejected{};
   int64_t outputs = 0;
   int64_t imu_windows = 0;
   int64_t vio_fused = 0;
@@ -61,7 +51,8 @@ struct EstimatorCounters {
   int64_t accel_clipping = 0;    // accepted IMU samples with an accelerometer axis at the clip level
 
   int64_t rejectedTotal() const;
-  int64_t rejectedFor(Rejection reason) const { return rejected[static_cast<size_t>(reason)]; }
+  int64_t imuRejected(RejectReason reason) const { return imu_rejected[static_cast<size_t>(reason)]; }
+  int64_t vioRejected(RejectReason reason) const { return vio_rejected[static_cast<size_t>(reason)]; }
 };
 
 class Estimator {
@@ -82,7 +73,9 @@ class Estimator {
   bool healthy() const { return status_ == EstimatorStatus::kOk; }
   bool initialized() const { return initialized_; }
   const EstimatorCounters& counters() const { return counters_; }
-  std::optional<Rejection> lastRejection() const { return last_rejection_; }
+  // Why the last onImu() / onVio() call refused its input (kNone: accepted).
+  RejectReason lastImuRejection() const { return last_imu_rejection_; }
+  RejectReason lastVioRejection() const { return last_vio_rejection_; }
   const EstimatorParams& params() const { return params_; }
 
   // The newest state and its covariance (meaningful once initialized()).
@@ -103,7 +96,8 @@ class Estimator {
                    ErrorCovariance& covariance) const;
   void updateStatus();
   StateEstimate makeOutput();
-  VioOutcome reject(Rejection reason);  // counts and returns kRejected
+  void rejectImu(RejectReason reason);
+  VioOutcome rejectVio(RejectReason reason);  // counts and returns kRejected
 
   EstimatorParams params_;
   ProcessNoise noise_;
@@ -112,7 +106,8 @@ class Estimator {
   StateHistory history_;
   GatedPoseRun gated_run_;
   EstimatorCounters counters_;
-  std::optional<Rejection> last_rejection_;
+  RejectReason last_imu_rejection_ = RejectReason::kNone;
+  RejectReason last_vio_rejection_ = RejectReason::kNone;
 
   bool initialized_ = false;
   EstimatorStatus status_ = EstimatorStatus::kInitializing;

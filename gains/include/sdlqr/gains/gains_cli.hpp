@@ -2,7 +2,11 @@
 // The one-shot mode of sdlqr-gains: parse a linearization point from the command line, and
 // format one solve as a single JSON object. Kept out of main so that it is testable.
 
+#include <ostream>
 #include <string>
+
+#include "sdlqr/config/cli.hpp"
+#include "sdlqr/config/config.hpp"
 
 #include "sdlqr/math/lqr.hpp"
 #include "sdlqr/math/lqr_params.hpp"
@@ -22,5 +26,19 @@ const char* toString(SolveStatus status);
 // "u_lin"}; doubles with 17 significant digits (they round-trip), non-finite numbers as null.
 std::string formatGainsJson(const State& x_lin, const Input& u_lin, const LqrParams& params, const LqrResult& result,
                             double solve_us);
+
+// The one-shot options (--once, --state, --input, --method) of the command line.
+struct OnceOptions {
+  bool once = false;
+  std::string state_text, input_text, method_text;
+};
+void addOnceOptions(ArgParser& parser, OnceOptions* options);
+extern const char* const kOnceEpilog;
+// lqr: of the vehicle file, with --method if given (std::invalid_argument on a bad name).
+LqrParams lqrParamsWithMethod(const ConfigReader& lqr, const OnceOptions& options);
+// --state and --input belong to --once (std::invalid_argument otherwise).
+void requireBusMode(const OnceOptions& options);
+// Solves at --state/--input, prints the JSON line; returns the exit code (0 solved, 1 failed).
+int solveOnce(const OnceOptions& options, const LqrParams& params, std::ostream& out);
 
 }  // namespace sdlqr::gains

@@ -1,29 +1,17 @@
 #pragma once
-// The one map from channel names to LCM message types (DESIGN §2: one type per channel) used by
+// The one map from channel names to LCM message types (one type per channel) used by
 // the reader, the CSV export and the metrics. Names come from common/channels.hpp.
 
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "sdlqr/health/stream.hpp"
+
 namespace sdlqr::logger {
 
-enum class MessageType {
-  kImu,
-  kVioPose,
-  kStateEstimate,
-  kRateCommand,
-  kMotorCommand,
-  kGains,
-  kReference,
-  kTrajectory,
-  kDisturbance,
-  kParams,
-  kCommand,
-  kHeartbeat,
-  kSimTruth,
-  kSimClock,
-};
+// The streams of common/health (one per channel); kOther and kCount name no message type.
+using MessageType = ::sdlqr::Stream;
 
 struct ChannelType {
   std::string_view base;       // channel without vehicle prefix, e.g. "IMU"

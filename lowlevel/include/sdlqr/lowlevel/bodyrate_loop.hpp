@@ -27,10 +27,10 @@ namespace sdlqr::lowlevel {
 
 struct LowlevelCounters {
   int64_t imu_accepted = 0;
-  std::array<int64_t, kImuRejectCount> imu_rejected{};  // indexed by ImuReject
+  std::array<int64_t, kRejectReasonCount> imu_rejected{};  // indexed by RejectReason
   int64_t imu_resyncs = 0;          // clock restarts accepted after a run of time rejects
   int64_t rate_cmd_accepted = 0;
-  std::array<int64_t, kRateCommandRejectCount> rate_cmd_rejected{};  // indexed by RateCommandReject
+  std::array<int64_t, kRejectReasonCount> rate_cmd_rejected{};  // indexed by RejectReason
   int64_t mass_rejected = 0;
   int64_t arm_refused = 0;
   int64_t failsafe_entries = 0;
@@ -64,7 +64,7 @@ class BodyrateLoop {
   BodyrateLoop(const VehicleParams& vehicle, const LowlevelParams& params, double gravity = kDefaultGravity);
 
   // Validates and keeps the command (latest wins). Returns why it was refused, kNone if kept.
-  RateCommandReject setRateCommand(const RateCommand& command);
+  RejectReason setRateCommand(const RateCommand& command);
   // ARM, DISARM, TAKEOFF (arms), LAND (disarms when idle on the ground); GOTO is for the
   // controller. Returns false when refused (arming before the first IMU sample).
   bool handleCommand(const Command& command);
@@ -75,7 +75,7 @@ class BodyrateLoop {
   // returns the previous command unchanged.
   MotorCommand step(const ImuSample& sample);
 
-  ImuReject lastImuReject() const { return last_imu_reject_; }
+  RejectReason lastImuReject() const { return last_imu_reject_; }
   MotorMode mode() const { return status_.mode; }
   const LowlevelStatus& status() const { return status_; }
   const LowlevelCounters& counters() const { return counters_; }
@@ -107,7 +107,7 @@ class BodyrateLoop {
   bool command_pending_ = false;  // accepted since the last mode change that needs a fresh one
   int64_t last_imu_utime_ = kNoTime;
   int consecutive_time_rejects_ = 0;
-  ImuReject last_imu_reject_ = ImuReject::kNone;
+  RejectReason last_imu_reject_ = RejectReason::kNone;
   double rotor_specific_force_ = 0.0;  // [m/s^2] rotor thrust after the motor lag, over the mass
   Vec4 thrust_ = Vec4::Zero();
   MotorCommand output_;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "sdlqr/config/config.hpp"
+#include "sdlqr/health/reject_reason.hpp"
 #include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr::lowlevel {
@@ -25,36 +26,18 @@ struct InputLimits {
   bool valid() const { return invalidReason().empty(); }
 };
 
-enum class RateCommandReject : int8_t {
-  kNone = 0,
-  kNonFinite,      // NaN or infinity in a rate or the thrust
-  kRateLimit,      // |omega| above max_body_rate
-  kThrustRange,    // thrust outside [0, 4 * max rotor thrust / mass]
-  kTimeBackwards,  // older than the last accepted command
-  kFuture,         // further ahead of the IMU clock than max_command_lead
-  kStale,          // older than the RATE_CMD timeout at arrival
-  kNoClock,        // no IMU sample yet to judge its time against
-};
-inline constexpr int kRateCommandRejectCount = 8;
-
-enum class ImuReject : int8_t {
-  kNone = 0,
-  kNonFinite,      // NaN or infinity
-  kOutOfRange,     // beyond the sensor range
-  kTimeBackwards,  // not newer than the previous accepted sample
-  kTimeJump,       // more than max_imu_gap ahead of the previous accepted sample
-};
-inline constexpr int kImuRejectCount = 5;
-
-const char* toString(RateCommandReject reason);
-const char* toString(ImuReject reason);
-
+// kNonFinite, kOutOfRange (beyond the sensor range), kTimeBackwards (not newer than the previous
+// accepted sample), kTimeGap (more than max_imu_gap after it).
 // last_utime: utime of the previous accepted sample, kNoTime for none.
-ImuReject checkImu(const ImuSample& sample, const InputLimits& limits, int64_t last_utime);
+RejectReason checkImu(const ImuSample& sample, const InputLimits& limits, int64_t last_utime);
 
+// kNonFinite, kOutOfRange (|omega| above max_body_rate, thrust outside [0, max_thrust]),
+// kTimeBackwards (older than the last accepted command), kNoClock (no IMU sample yet),
+// kTimeFuture (further ahead of the IMU clock than max_command_lead), kStale (older than the
+// RATE_CMD timeout at arrival).
 // max_thrust [m/s^2]; imu_utime: latest accepted IMU time (kNoTime: none yet); last_utime: utime
 // of the last accepted command (kNoTime: none); max_age [s]: the RATE_CMD timeout.
-RateCommandReject checkRateCommand(const RateCommand& command, const InputLimits& limits, double max_thrust,
+RejectReason checkRateCommand(const RateCommand& command, const InputLimits& limits, double max_thrust,
                                    int64_t imu_utime, int64_t last_utime, double max_age);
 
 }  // namespace sdlqr::lowlevel

@@ -34,9 +34,9 @@ class Simulator {
   Simulator(const VehicleParams& vehicle, const SimParams& params, uint64_t seed);
 
   // Latest command wins, from the next step on. A command failing checkMotorCommand is ignored.
-  MotorCommandFault setMotorCommand(const MotorCommand& command);
+  RejectReason setMotorCommand(const MotorCommand& command);
   // Schedules an external wrench (start_utime in the past or 0: from the next step).
-  DisturbanceFault addDisturbance(const Disturbance& disturbance);
+  RejectReason addDisturbance(const Disturbance& disturbance);
 
   // Advances exactly one physics period.
   StepOutput step();

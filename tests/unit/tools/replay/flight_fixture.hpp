@@ -1,7 +1,8 @@
 #pragma once
 // A recorded flight without a bus: the in-process closed loop flies the short hover scenario of
 // the replay integration test, and its messages are put in the order a recorder would have
-// heard them (per IMU sample: the scenario's commands, the IMU, the STATE_EST it completed).
+// heard them (per IMU sample: the IMU, the STATE_EST it completed, then the scenario's commands,
+// sent on the SIM_CLOCK tick that follows the step's IMU).
 // A VIO pose is placed just before the IMU sample whose STATE_EST first names it (vio_seq).
 
 #include <algorithm>
@@ -20,6 +21,8 @@ inline ReplayParams paramsOf(const closedloop::StackConfig& c) {
   p.lqr = c.lqr;
   p.controller = c.controller;
   p.gains = c.gains;
+  p.faults = c.faults;
+  p.limits = c.limits;
   return p;
 }
 
@@ -57,11 +60,12 @@ inline ClosedLoopFlight flyClosedLoop() {
         f.order.push_back({InputKind::kVioPose, static_cast<int32_t>(vio++)});
       }
     }
+    f.order.push_back({InputKind::kImu, static_cast<int32_t>(i)});
+    if (completes) f.order.push_back({InputKind::kStateEstimate, static_cast<int32_t>(estimate++)});
+    // The scenario player runs on SIM_CLOCK, which the simulator publishes after the step's IMU.
     while (command < f.command.size() && f.command[command].utime <= utime) {
       f.order.push_back({InputKind::kCommand, static_cast<int32_t>(command++)});
     }
-    f.order.push_back({InputKind::kImu, static_cast<int32_t>(i)});
-    if (completes) f.order.push_back({InputKind::kStateEstimate, static_cast<int32_t>(estimate++)});
   }
   return out;
 }

@@ -26,37 +26,19 @@
 #include <vector>
 
 #include "sdlqr/bus/bus_layout.hpp"
-#include "sdlqr/messages/channels.hpp"
+#include "sdlqr/bus/decode.hpp"
 #include "sdlqr/config/cli.hpp"
+#include "sdlqr/health/process_health.hpp"
+#include "sdlqr/messages/channels.hpp"
 
 namespace sdlqr::bus {
 
 class UdpmInbox;
 struct WireMessage;
 
-enum class ProcessState : int8_t { kStarting = 0, kRunning = 1, kDegraded = 2, kFailsafe = 3, kStopping = 4 };
-
-// Named counters reported in HEARTBEAT; registered once at start so counting never allocates.
-class Counters {
- public:
-  using Id = int;
-  Id add(const std::string& name);
-  void increment(Id id, int64_t by = 1) { values_[static_cast<size_t>(id)] += by; }
-  // For gauges (a watchdog's age, an expired flag).
-  void set(Id id, int64_t value) { values_[static_cast<size_t>(id)] = value; }
-  int64_t value(Id id) const { return values_[static_cast<size_t>(id)]; }
-  const std::vector<std::string>& names() const { return names_; }
-  const std::vector<int64_t>& values() const { return values_; }
-
- private:
-  std::vector<std::string> names_;
-  std::vector<int64_t> values_;
-};
-
-// The bytes hold exactly one complete encoding of T (walked without allocating); defined for
-// every type of lcmtypes/ in wire_fits.cpp.
-template <class T>
-bool encodingFits(const uint8_t* data, int64_t size);
+// Health lives in common/health (bus-free, shared with the replay and the in-process loop).
+using ProcessState = ::sdlqr::ProcessState;
+using Counters = ::sdlqr::Counters;
 
 // Seeded loss and latency on every typed subscription of a process (the kernel here has no
 // netem). Spec text: "drop=0.1,delay_ms=0:5,seed=7" (any subset, comma-separated). Each received
@@ -76,6 +58,8 @@ struct FaultInjection {
 class Node {
  public:
   Node(std::string process, const ProcessOptions& options);
+  // The heartbeat reports `health`: a process core's (what its handlers count), or the node's own.
+  Node(std::string process, const ProcessOptions& options, ProcessHealth& health);
   ~Node();
   Node(const Node&) = delete;
   Node& operator=(const Node&) = delete;
@@ -88,8 +72,9 @@ class Node {
   // Every URL this node receives on (one per port it subscribes on), in the order opened.
   std::vector<std::string> receiveUrls() const;
 
-  // Decodes each message of `base` as T and calls handler(msg). A message that fails to decode
-  // is counted as rejected ("reject.decode") and never reaches the handler. Gaps in `seq` count
+  // Decodes each message of `base` as T and calls handler(msg). A message that fails the size
+  // walk or the decode is rejected (kBadSize, kDecode, counted for the channel's stream in the
+  // health) and never reaches the handler. Gaps in `seq` count
   // as dropped. queue_capacity 1: while a message waits to be handled, newer ones are dropped
   // (LCM's semantics), so a control loop never works through a backlog. A handler
   // that runs longer than a non-zero `budget` (wall time) counts as a deadline miss in HEARTBEAT.
@@ -128,24 +113,21 @@ class Node {
   // For a main that ends itself (e.g. a duration elapsed): publishes a last STOPPING heartbeat.
   void shutdown();
 
-  // Heartbeat contents.
-  void setState(ProcessState state) { state_ = state; }
-  ProcessState state() const { return state_; }
-  void setSimTime(int64_t utime) { sim_utime_ = utime; }
-  void setLastError(const std::string& text) { last_error_ = text; }
-  Counters& counters() { return counters_; }
-  void countRejected(Counters::Id reason) {
-    ++rejected_;
-    counters_.increment(reason);
-  }
-  void countError() { ++errors_; }
-  void countDeadlineMiss() { ++deadline_misses_; }
+  // Heartbeat contents: the health's.
+  ProcessHealth& health() { return *health_; }
+  void setState(ProcessState state) { health_->setState(state); }
+  ProcessState state() const { return health_->state(); }
+  void setSimTime(int64_t utime) { health_->setSimTime(utime); }
+  void setLastError(const std::string& text) { health_->setLastError(text); }
+  Counters& counters() { return health_->counters(); }
+  void countError() { health_->countError(); }
+  void countDeadlineMiss() { health_->countDeadlineMiss(); }
   // Messages lost by the process itself (e.g. a recorder's queue overflow), for HEARTBEAT dropped.
-  void countDropped(int64_t count) { dropped_ += count; }
+  void countDropped(int64_t count) { health_->countDropped(count); }
   int64_t received() const { return received_; }
-  int64_t rejected() const { return rejected_; }
-  int64_t dropped() const { return dropped_; }
-  int64_t deadlineMisses() const { return deadline_misses_; }
+  int64_t rejected() const { return health_->rejected(); }
+  int64_t dropped() const { return health_->dropped(); }
+  int64_t deadlineMisses() const { return health_->deadlineMisses(); }
   const std::string& process() const { return process_; }
 
   void publishHeartbeat();
@@ -155,6 +137,7 @@ class Node {
     virtual ~SubscriptionBase() = default;
     virtual void onMessage(const void* data, uint32_t size) = 0;
     Node* node = nullptr;
+    Stream stream = Stream::kOther;
     int64_t last_seq = -1;
     std::chrono::steady_clock::duration budget{};  // zero: not timed
     std::chrono::steady_clock::time_point last_due{};  // keeps a channel's delayed messages in order
@@ -165,14 +148,7 @@ class Node {
     T message;  // decoded in place: fixed-size types never allocate
     void onMessage(const void* data, uint32_t size) override {
       ++node->received_;
-      if (!encodingFits<T>(static_cast<const uint8_t*>(data), size)) {
-        node->countRejected(node->reject_size_);
-        return;
-      }
-      if (message.decode(data, 0, static_cast<int>(size)) < 0) {
-        node->countRejected(node->reject_decode_);
-        return;
-      }
+      if (node->health_->reject(stream, decode(data, size, message))) return;
       node->noteSequence(*this, message.seq);
       if (budget == std::chrono::steady_clock::duration::zero()) {
         handler(message);
@@ -252,9 +228,8 @@ class Node {
   std::vector<PublishChannel> publish_channels_;
   std::vector<std::pair<std::string, lcm::LCM*>> encoded_channels_;  // publishEncoded's, found once
   std::vector<Endpoint*> receiving_;  // the endpoints handleReady polls
-  Counters counters_;
-  Counters::Id reject_decode_;
-  Counters::Id reject_size_;
+  ProcessHealth own_health_;
+  ProcessHealth* health_ = &own_health_;
   struct DelayedMessage {
     SubscriptionBase* sub = nullptr;
     std::chrono::steady_clock::time_point due;
@@ -270,16 +245,9 @@ class Node {
   Counters::Id bus_malformed_ = -1;
   Counters::Id bus_over_capacity_ = -1;
   Counters::Id bus_unrouted_ = -1;
-  ProcessState state_ = ProcessState::kStarting;
-  int64_t sim_utime_ = 0;
   int64_t received_ = 0;
   int64_t published_ = 0;
-  int64_t dropped_ = 0;
-  int64_t rejected_ = 0;
-  int64_t deadline_misses_ = 0;
-  int64_t errors_ = 0;
   int64_t heartbeat_seq_ = 0;
-  std::string last_error_;
   std::chrono::steady_clock::time_point next_heartbeat_;
   std::chrono::steady_clock::time_point cpu_window_start_;
   double cpu_seconds_at_window_start_ = 0.0;
@@ -291,6 +259,7 @@ void Node::subscribe(std::string_view base, std::function<void(const T&)> handle
   auto sub = std::make_unique<TypedSubscription<T>>();
   sub->handler = std::move(handler);
   sub->budget = budget;
+  sub->stream = streamOfChannel(base);
   addSubscription(channel(base), std::move(sub), queue_capacity);
 }
 

@@ -56,6 +56,10 @@ struct ProcessOptions {
 void addProcessOptions(ArgParser& parser, ProcessOptions* options);
 // --bus-layout alone, for the tools that take --lcm-url without the rest of addProcessOptions.
 void addBusLayoutOption(ArgParser& parser, ProcessOptions* options);
+// The command line of a flight process with no options of its own: --help (the description and
+// the exit codes), the process options; exits on --help or a bad option.
+ProcessOptions parseProcessCommandLine(int argc, const char* const* argv, const std::string& program,
+                                       const std::string& description);
 
 // Runs `body`, turning a ConfigError or std::invalid_argument into a one-line message and exit
 // code 2, any other exception into a one-line message and exit code 1.

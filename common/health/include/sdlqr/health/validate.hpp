@@ -1,27 +1,13 @@
 #pragma once
 // Message validation before any algorithm sees a message (DESIGN §7: "malformed or out-of-range
 // message: dropped, counted, never crashes, never reaches the controller"). Pure checks on the
-// plain structs; each rejection has a reason that processes count in HEARTBEAT as "reject.<name>".
+// plain structs; each rejection has a reason (reject_reason.hpp) that processes count in HEARTBEAT.
 
+#include "sdlqr/health/reject_reason.hpp"
 #include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr {
 
-enum class RejectReason {
-  kNone = 0,
-  kNonFinite,       // NaN or Inf in a field
-  kQuaternionNorm,  // |q| far from 1
-  kOutOfRange,      // a value beyond physical or configured limits
-  kBadEnum,         // an enum field with an unknown value
-  kBadSize,         // array lengths inconsistent, too few or too many samples
-  kBadStatus,       // a result that says it failed (e.g. GAINS status != OK)
-  kTimeBackwards,   // utime older than the newest accepted on the channel
-  kTimeFuture,      // utime beyond the newest known simulation time plus a tolerance
-  kUnstable,        // a gain whose closed loop the receiver's own check finds not Schur stable
-  kCount
-};
-
-const char* counterName(RejectReason reason);  // "reject.nonfinite", ...
 
 // Limits a validator cannot know from the message alone.
 struct ValidationLimits {
@@ -107,5 +93,20 @@ class ClockGate {
   int64_t candidate_utime_ = -1;
   int candidate_count_ = 0;
 };
+
+// The admission of a rare message that changes the flight (COMMAND, PARAMS, DISTURBANCE): valid,
+// then in (utime, seq) order and not from the future of the receiver's clock (now_utime, -1 if
+// none yet). What every process runs for such a message, so a replayed one is refused alike.
+template <class Msg>
+RejectReason admitOrdered(const Msg& m, const ValidationLimits& limits, OrderGate& order, int64_t now_utime) {
+  const RejectReason reason = validate(m, limits);
+  return reason != RejectReason::kNone ? reason : order.offer(m.utime, m.seq, now_utime);
+}
+
+// The admission of a process's clock stream (STATE_EST in the controller and the gain solver).
+inline RejectReason admitClock(const StateEstimate& m, const ValidationLimits& limits, ClockGate& clock) {
+  const RejectReason reason = validate(m, limits);
+  return reason != RejectReason::kNone ? reason : clock.offer(m.utime);
+}
 
 }  // namespace sdlqr

@@ -1,31 +1,37 @@
 #pragma once
-// The in-process closed loop (DESIGN §8): the same libraries the flight processes run — plant,
-// estimator, gain solver, controller, bodyrate loop, scenario player — stepped together without a
-// bus. Each message reaches its consumers within the physics step that produced it, in the order
-// the processes would see it (the bodyrate loop acts on an IMU sample before the command computed
-// from the same sample arrives). Deterministic: the same scenario and seed give the same flight,
-// bit for bit, much faster than real time — for scenario regression and Monte Carlo.
+// The in-process closed loop: the very process cores the flight executables bind to the bus —
+// simulator, estimator, gain solver, controller, lowlevel, mission — stepped together without a
+// bus, so every message passes the same validation, gates and counters as on the bus. Each
+// message reaches its consumers within the physics step that produced it, in the order the
+// processes would see it (the bodyrate loop acts on an IMU sample before the command computed
+// from the same sample arrives). Wall time is simulation time here: each core's onWallTime()
+// gets the simulation time [s] before every physics step. Deterministic: the same scenario and
+// seed give the same flight, bit for bit, much faster than real time — for scenario regression
+// and Monte Carlo.
 //
 // Every message is recorded into a FlightLog, so the analysis of a bus flight applies unchanged.
+// inject() puts a message on the loop as if a foreign publisher had sent it (hostile-input tests).
 
-#include <memory>
 #include <string>
 
+#include "sdlqr/controller/controller_core.hpp"
+#include "sdlqr/controller/controller_params.hpp"
+#include "sdlqr/estimator/estimator_core.hpp"
+#include "sdlqr/estimator/estimator_params.hpp"
+#include "sdlqr/gains/gains_core.hpp"
+#include "sdlqr/gains/gains_params.hpp"
+#include "sdlqr/health/validate.hpp"
+#include "sdlqr/health/watchdog.hpp"
+#include "sdlqr/logger/flight_log.hpp"
+#include "sdlqr/lowlevel/lowlevel_core.hpp"
+#include "sdlqr/lowlevel/lowlevel_params.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/math/vehicle.hpp"
-#include "sdlqr/controller/controller_params.hpp"
-#include "sdlqr/gains/gain_scheduler.hpp"
-#include "sdlqr/gains/gains_params.hpp"
-#include "sdlqr/controller/state_dependent_lqr.hpp"
-#include "sdlqr/estimator/estimator.hpp"
-#include "sdlqr/estimator/estimator_params.hpp"
-#include "sdlqr/logger/flight_log.hpp"
-#include "sdlqr/lowlevel/bodyrate_loop.hpp"
-#include "sdlqr/lowlevel/lowlevel_params.hpp"
-#include "sdlqr/mission/mission_player.hpp"
+#include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/mission/mission_core.hpp"
 #include "sdlqr/mission/scenario.hpp"
+#include "sdlqr/sim/sim_core.hpp"
 #include "sdlqr/sim/sim_params.hpp"
-#include "sdlqr/sim/simulator.hpp"
 #include "sdlqr/trajectory/params.hpp"
 
 namespace sdlqr::closedloop {
@@ -40,6 +46,8 @@ struct StackConfig {
   controller::ControllerParams controller;
   gains::GainsParams gains;
   trajectory::TrajectoryParams trajectory;
+  FaultParams faults;
+  ValidationLimits limits;
 
   // Throws ConfigError naming the key.
   static StackConfig load(const std::string& vehicle_file);
@@ -50,44 +58,59 @@ struct RecordOptions {
   bool motor_command = false;
 };
 
-class ClosedLoop {
+// The mission's re-sends are off by default (0): the loop has no restarted process to tell.
+class ClosedLoop : private Outbox {
  public:
-  ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record = {});
+  ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record = {},
+             double command_resend_s = 0.0);
 
   // One physics step. Returns false once the scenario's duration has passed.
   bool step();
   void run();
+  // Delivers a message to its consumers now (recorded like every other), as a foreign publisher.
+  template <class Msg>
+  void inject(const Msg& message) {
+    publish(message);
+  }
 
-  int64_t utime() const { return sim_.utime(); }
+  int64_t utime() const { return sim_.simulator().utime(); }
   const logger::FlightLog& log() const { return log_; }
-  const sim::Simulator& simulator() const { return sim_; }
-  const estimator::Estimator& estimator() const { return estimator_; }
-  const controller::StateDependentLqr& controller() const { return controller_; }
-  const lowlevel::BodyrateLoop& lowlevel() const { return lowlevel_; }
+  const sim::SimCore& sim() const { return sim_; }
+  const estimator::EstimatorCore& estimator() const { return estimator_; }
+  const gains::GainsCore& gains() const { return gains_; }
+  const controller::ControllerCore& controller() const { return controller_; }
+  const lowlevel::LowlevelCore& lowlevel() const { return lowlevel_; }
+  const mission::MissionCore& mission() const { return mission_; }
 
  private:
-  void play(const mission::ScenarioEvent& event, size_t index);
+  // The wiring: each message to the cores that subscribe to its channel on the bus.
+  void publish(const ImuSample& m) override;
+  void publish(const VioPose& m) override;
+  void publish(const SimTruth& m) override;
+  void publish(const StateEstimate& m) override;
+  void publish(const GainSet& m) override;
+  void publish(const RateCommand& m) override;
+  void publish(const Reference& m) override;
+  void publish(const MotorCommand& m) override;
+  void publish(const Command& m) override;
+  void publish(const Disturbance& m) override;
+  void publish(const ParamsUpdate& m) override;
+  void publish(const Trajectory& m) override;
+  void publish(const SimClockTick& m) override;
+
   template <class T>
   static void record(logger::Series<T>& series, const T& message) {
     series.messages.push_back(message);
     series.receive_utime.push_back(message.utime);
   }
 
-  StackConfig config_;
-  const mission::Scenario& scenario_;
   RecordOptions record_;
-  sim::Simulator sim_;
-  estimator::Estimator estimator_;
-  lowlevel::BodyrateLoop lowlevel_;
-  controller::StateDependentLqr controller_;
-  gains::GainScheduler gains_;
-  mission::MissionPlayer player_;
-  std::vector<Trajectory> trajectories_;
-  controller::StateDependentLqr::Tick tick_;
-  int64_t command_seq_ = 0;
-  int64_t disturbance_seq_ = 0;
-  int64_t params_seq_ = 0;
-  int64_t trajectory_seq_ = 0;
+  sim::SimCore sim_;
+  estimator::EstimatorCore estimator_;
+  lowlevel::LowlevelCore lowlevel_;
+  controller::ControllerCore controller_;
+  gains::GainsCore gains_;
+  mission::MissionCore mission_;
   logger::FlightLog log_;
 };
 

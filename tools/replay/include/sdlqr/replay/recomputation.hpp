@@ -1,7 +1,9 @@
 #pragma once
-// Recomputes a recorded flight: a fresh estimator, gain solver and controller (the libraries of
-// sdlqr-estimator, sdlqr-gains and sdlqr-controller, with the validation their mains apply) are
-// fed the recorded inputs in one thread, so the result does not depend on scheduling.
+// Recomputes a recorded flight: fresh process cores of sdlqr-estimator, sdlqr-gains and
+// sdlqr-controller (the very objects those executables bind to the bus, with every validation,
+// gate and counter) are fed the recorded inputs in one thread, so the result does not depend on
+// scheduling, and an input the bus refused is refused here the same way, counted in the same
+// health (the cores' onWallTime() gets the simulation time of each input, in seconds).
 //
 // The pairing contract. On the bus, which message a process handles first is a race (a GAINS
 // may land just before or just after a controller tick). Every output therefore names the inputs
@@ -25,13 +27,15 @@
 #include <optional>
 #include <vector>
 
-#include "sdlqr/math/lqr_params.hpp"
-#include "sdlqr/health/validate.hpp"
+#include "sdlqr/controller/controller_core.hpp"
 #include "sdlqr/controller/controller_params.hpp"
-#include "sdlqr/gains/gain_scheduler.hpp"
+#include "sdlqr/estimator/estimator_core.hpp"
+#include "sdlqr/gains/gains_core.hpp"
 #include "sdlqr/gains/gains_params.hpp"
-#include "sdlqr/controller/state_dependent_lqr.hpp"
-#include "sdlqr/estimator/estimator.hpp"
+#include "sdlqr/health/validate.hpp"
+#include "sdlqr/health/watchdog.hpp"
+#include "sdlqr/math/lqr_params.hpp"
+#include "sdlqr/messages/outbox.hpp"
 #include "sdlqr/replay/recorded_flight.hpp"
 
 namespace sdlqr::replay {
@@ -41,6 +45,8 @@ struct ReplayParams {
   LqrParams lqr;
   controller::ControllerParams controller;
   gains::GainsParams gains;
+  FaultParams faults;
+  ValidationLimits limits;
 };
 
 // How the pairing was honoured.
@@ -51,12 +57,16 @@ struct PairingStats {
   int64_t references_from_record = 0;
   int64_t solves_unpaired = 0;      // a solve at an estimate no recorded GAINS names
   int64_t estimates_without_record = 0;  // recomputed STATE_EST of a seq absent from the log
-  int64_t rejected = 0;             // inputs refused by the validation of the process mains
+  int64_t rejected = 0;             // inputs refused by the cores (see the cores' health)
   int64_t solve_failures = 0;
   // STATE_EST the process did not receive on the bus (its queue holds one message), inferred
   // from the recorded outputs: the controller ticked later, the solver solved on a later one.
   int64_t estimates_missed_by_controller = 0;
   int64_t estimates_missed_by_solver = 0;
+  // Recorded STATE_EST and GAINS the replay did not compute (forged, replayed, another process's):
+  // fed to the cores as they reached them on the bus.
+  int64_t foreign_estimates = 0;
+  int64_t foreign_gains = 0;
 };
 
 class Recomputation {
@@ -78,46 +88,74 @@ class Recomputation {
 
   const ReplayOutputs& outputs() const { return outputs_; }
   const PairingStats& pairing() const { return pairing_; }
+  const estimator::EstimatorCore& estimator() const { return estimator_; }
+  const gains::GainsCore& gains() const { return gains_; }
+  const controller::ControllerCore& controller() const { return controller_; }
   std::size_t inputsHandled() const { return next_; }
 
  private:
-  void onImu(const ImuSample& sample);
-  void onRecordedEstimate(int64_t seq);
+  // What the cores publish (STATE_EST, GAINS, RATE_CMD, REFERENCE), taken on by the replay.
+  struct TakeOutput {
+    Recomputation* replay;
+    template <class Msg>
+    void operator()(const Msg& m) const {
+      replay->onOutput(m);
+    }
+  };
+  template <class Msg>
+  void onOutput(const Msg&) {}  // the three cores publish nothing else
+  void onOutput(const StateEstimate& m) { onEstimate(m); }
+  void onOutput(const GainSet& m);
+  void onOutput(const RateCommand& m);
+  void onOutput(const Reference& m);
+
+  void onEstimate(const StateEstimate& estimate);
+  void feedWallTime(int64_t utime);
+  void onRecordedEstimate(const StateEstimate& recorded);
+  void onRecordedGains(const GainSet& recorded);
+  bool aheadOfItsImu(const StateEstimate& recorded) const;
+  void onUndecodable(const UndecodableInput& input);
+  void updateRejected();
+  void feedNamedReference(const StateEstimate& estimate);
   void handOver(const StateEstimate& estimate);
   void controllerOnEstimate(const StateEstimate& estimate);
   bool missedByController(const StateEstimate& estimate, const RateCommand& recorded) const;
   void gainsOnEstimate(const StateEstimate& estimate);
+  using SeqIndex = std::map<int64_t, std::size_t>;  // seq -> index into a series
+  template <class T>
+  static const T* named(int64_t seq, const SeqIndex& replayed, const std::vector<T>& replayed_series,
+                        const SeqIndex& recorded, const std::vector<T>& recorded_series, int64_t& from_replay,
+                        int64_t& from_record);
   void feedNamedGains(int64_t gains_seq);
   void deliverCommandsBefore(const StateEstimate& estimate);
-  void applyCommand(const Command& command);
-  void onTrajectory(const Trajectory& trajectory);
+  void applyCommand(std::size_t index);
   void onParams(const ParamsUpdate& update);
-  bool rejected(RejectReason reason);
 
   const RecordedFlight& flight_;
   std::size_t next_ = 0;
   ReplayOutputs outputs_;
   PairingStats pairing_;
 
-  estimator::Estimator estimator_;
-  gains::GainScheduler scheduler_;
+  estimator::EstimatorCore estimator_;
+  gains::GainsCore gains_;
   int64_t solve_period_us_;  // as GainScheduler's grid
-  controller::StateDependentLqr controller_;
+  controller::ControllerCore controller_;
   int64_t tick_period_us_;   // as the controller's grid
-  ValidationLimits limits_;
-  TimeGate controller_state_time_, gains_state_time_;
+  OutboxTo<TakeOutput> outbox_{TakeOutput{this}};
 
   // Recomputed estimates waiting for the log position of the recorded STATE_EST of their seq.
   std::map<int64_t, StateEstimate> waiting_;
   int64_t handed_over_up_to_ = -1;    // highest recorded STATE_EST seq whose place has passed
+  int64_t last_recomputed_seq_ = -1, last_recomputed_utime_ = -1;
   std::size_t next_tick_ = 0;         // index of the next recorded RATE_CMD
   std::size_t next_solve_ = 0;        // index of the next recorded GAINS
   int64_t fed_gains_seq_ = -1;
-  std::vector<std::size_t> heard_commands_;  // COMMANDs the recorder heard, not yet applied
-  int64_t applied_command_seq_ = -1;
+  std::vector<std::size_t> heard_commands_;  // COMMANDs the recorder heard, not yet delivered
+  std::vector<bool> command_delivered_;      // by index into flight_.command
+  int64_t applied_command_seq_ = -1;         // highest seq delivered
   // Recomputed outputs by seq, for the pairing.
-  std::map<int64_t, std::size_t> replayed_gains_, replayed_reference_;
-  std::map<int64_t, std::size_t> recorded_gains_, recorded_reference_, recorded_estimate_;
+  SeqIndex replayed_gains_, replayed_reference_;
+  SeqIndex recorded_gains_, recorded_reference_, recorded_estimate_;
 };
 
 }  // namespace sdlqr::replay

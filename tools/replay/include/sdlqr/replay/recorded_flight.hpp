@@ -7,11 +7,22 @@
 #include <cstdint>
 #include <vector>
 
+#include "sdlqr/health/reject_reason.hpp"
+#include "sdlqr/health/stream.hpp"
 #include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr::replay {
 
-enum class InputKind : uint8_t { kImu, kVioPose, kStateEstimate, kCommand, kTrajectory, kParams };
+// kStateEstimate and kGains mark where a recorded output was heard: a recomputed one takes its
+// place there, a foreign one (forged, replayed) is fed to the cores as it was on the bus.
+// kUndecodable is a message of an input channel the bus's decode step refused (size walk, decode).
+enum class InputKind : uint8_t { kImu, kVioPose, kStateEstimate, kCommand, kTrajectory, kParams, kGains, kUndecodable };
+
+struct UndecodableInput {
+  int64_t utime = 0;  // [us] of the input before it (its own bytes hold no time to trust)
+  Stream stream = Stream::kOther;
+  RejectReason reason = RejectReason::kNone;
+};
 
 struct LogPosition {
   InputKind kind;
@@ -19,13 +30,14 @@ struct LogPosition {
 };
 
 struct RecordedFlight {
-  std::vector<LogPosition> order;  // every message below but the outputs other than STATE_EST, in log order
+  std::vector<LogPosition> order;  // every message below but RATE_CMD and REFERENCE, in log order
 
   std::vector<ImuSample> imu;
   std::vector<VioPose> vio_pose;
   std::vector<Command> command;
   std::vector<Trajectory> trajectory;
   std::vector<ParamsUpdate> params;
+  std::vector<UndecodableInput> undecodable;
 
   // Recorded outputs, each in log order.
   std::vector<StateEstimate> state_estimate;

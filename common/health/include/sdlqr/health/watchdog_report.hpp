@@ -5,10 +5,10 @@
 #include <cmath>
 #include <string>
 
+#include "sdlqr/health/counters.hpp"
 #include "sdlqr/health/watchdog.hpp"
-#include "sdlqr/bus/node.hpp"
 
-namespace sdlqr::bus {
+namespace sdlqr {
 
 class WatchdogReport {
  public:
@@ -31,7 +31,24 @@ class WatchdogReport {
   Counters::Id age_ms_;
 };
 
-// Seconds of the process's monotonic wall clock: what a silent stream is measured against.
-double monotonicSeconds();
+// A stream watchdog fed with wall time and reported in the counters: what every core's
+// onWallTime() runs for each stream whose silence it must notice.
+class StreamWatchdog {
+ public:
+  StreamWatchdog(Counters& counters, const std::string& stream, double timeout_s)
+      : dog_(timeout_s), report_(counters, stream) {}
+  void feed(double now_s) { dog_.feed(now_s); }
+  // Checks and reports; true while the stream is silent past its timeout.
+  bool check(double now_s) {
+    const bool silent = dog_.check(now_s);
+    report_.update(dog_, now_s);
+    return silent;
+  }
+  const Watchdog& watchdog() const { return dog_; }
 
-}  // namespace sdlqr::bus
+ private:
+  Watchdog dog_;
+  WatchdogReport report_;
+};
+
+}  // namespace sdlqr

@@ -1,0 +1,72 @@
+#pragma once
+// The mission process, bus-free: plays a scenario's events against the simulation clock and
+// re-sends the current setpoint command. Which stream provides the clock is the caller's
+// binding (onClock takes a utime); the in-process loop drives the same object.
+//
+//   onClock(utime)   a newer clock plays every event due (COMMAND, DISTURBANCE, PARAMS,
+//                    TRAJECTORY through the Outbox, each stamped with the clock and its own
+//                    channel's seq) and the due re-send; a clock not after the last is ignored
+//   onWallTime(now)  the clock watchdog: no newer clock for no_clock_timeout_s -> clockLost()
+// Trajectories are generated at construction, so a bad request fails before the flight.
+
+#include <cstdint>
+#include <vector>
+
+#include "sdlqr/health/process_health.hpp"
+#include "sdlqr/math/lqr_params.hpp"
+#include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/mission/command_resender.hpp"
+#include "sdlqr/mission/mission_player.hpp"
+#include "sdlqr/mission/scenario.hpp"
+#include "sdlqr/trajectory/params.hpp"
+
+namespace sdlqr::mission {
+
+struct MissionOptions {
+  double resend_interval_s = 1.0;   // [s] of simulation time between re-sends of TAKEOFF/GOTO (0: never)
+  double no_clock_timeout_s = 10.0; // [s] of wall time without a newer clock: clockLost()
+};
+
+class MissionCore {
+ public:
+  // Throws ConfigError naming the event's key when a trajectory cannot be built.
+  MissionCore(const Scenario& scenario, const trajectory::TrajectoryParams& trajectory, const LqrParams& lqr,
+              const MissionOptions& options);
+
+  void onClock(int64_t utime, Outbox& out);
+  void onWallTime(double now_s);
+
+  bool finished() const { return now_utime_ >= 0 && player_.finished(now_utime_); }
+  bool clockLost() const { return clock_lost_; }
+  int64_t now() const { return now_utime_; }  // -1 before the first clock
+  // Called for every event as it is played (the main's log line); nullptr: none.
+  using EventObserver = void (*)(const ScenarioEvent& event, int64_t utime);
+  void setObserver(EventObserver observer) { observer_ = observer; }
+
+  ProcessHealth& health() { return health_; }
+  const ProcessHealth& health() const { return health_; }
+
+ private:
+  void play(const ScenarioEvent& event, Outbox& out);
+
+  const Scenario& scenario_;
+  MissionOptions options_;
+  std::vector<Trajectory> trajectories_;  // by event index
+  MissionPlayer player_;
+  CommandResender resender_;
+  ProcessHealth health_;
+  EventObserver observer_ = nullptr;
+  int64_t now_utime_ = -1;
+  // One sequence per channel: subscribers count gaps in seq as lost messages.
+  int64_t command_seq_ = 0, disturbance_seq_ = 0, params_seq_ = 0, trajectory_seq_ = 0;
+  int64_t clock_seen_at_wall_ = -1;  // the clock at the last onWallTime
+  double clock_wall_s_ = -1.0;       // wall time the clock last advanced
+  bool clock_lost_ = false;
+};
+
+// One line for the log: "command goto (1.00, 0.00, 1.00) yaw 0.00  [label]".
+std::string describeEvent(const ScenarioEvent& event);
+// An EventObserver: "sdlqr-mission: t=  1.000 s  <describeEvent>" on stderr.
+void logEventToStderr(const ScenarioEvent& event, int64_t utime);
+
+}  // namespace sdlqr::mission

@@ -1,0 +1,130 @@
+#include "sdlqr/mission/mission_core.hpp"
+
+#include <cstdio>
+#include <string>
+
+#include "sdlqr/mission/trajectory_request.hpp"
+
+namespace sdlqr::mission {
+
+namespace {
+
+std::vector<Trajectory> buildTrajectories(const Scenario& scenario, const trajectory::TrajectoryParams& params,
+                                          const LqrParams& lqr) {
+  std::vector<Trajectory> trajectories(scenario.events.size());
+  for (size_t i = 0; i < scenario.events.size(); ++i) {
+    if (scenario.events[i].kind == ScenarioEvent::Kind::kTrajectory) {
+      trajectories[i] =
+          buildTrajectory(scenario.events[i].trajectory, params, lqr, "events[" + std::to_string(i) + "].trajectory");
+    }
+  }
+  return trajectories;
+}
+
+}  // namespace
+
+MissionCore::MissionCore(const Scenario& scenario, const trajectory::TrajectoryParams& trajectory, const LqrParams& lqr,
+                         const MissionOptions& options)
+    : scenario_(scenario),
+      options_(options),
+      trajectories_(buildTrajectories(scenario, trajectory, lqr)),
+      player_(scenario),
+      resender_(static_cast<int64_t>(options.resend_interval_s * 1e6)) {}
+
+void MissionCore::onClock(int64_t utime, Outbox& out) {
+  if (utime <= now_utime_) return;
+  now_utime_ = utime;
+  health_.setSimTime(utime);
+  while (const ScenarioEvent* event = player_.nextDue(utime)) {
+    if (observer_) observer_(*event, utime);
+    play(*event, out);
+  }
+  if (const Command* resend = resender_.due(utime)) out.publish(*resend);
+}
+
+void MissionCore::play(const ScenarioEvent& event, Outbox& out) {
+  switch (event.kind) {
+    case ScenarioEvent::Kind::kCommand: {
+      Command command = event.command;
+      command.utime = now_utime_;
+      command.seq = command_seq_++;
+      out.publish(command);
+      resender_.sent(command);
+      break;
+    }
+    case ScenarioEvent::Kind::kDisturbance: {
+      Disturbance disturbance = event.disturbance;
+      disturbance.utime = now_utime_;
+      disturbance.start_utime = now_utime_;
+      disturbance.seq = disturbance_seq_++;
+      out.publish(disturbance);
+      break;
+    }
+    case ScenarioEvent::Kind::kParams: {
+      ParamsUpdate params = event.params;
+      params.utime = now_utime_;
+      params.seq = params_seq_++;
+      out.publish(params);
+      break;
+    }
+    case ScenarioEvent::Kind::kTrajectory: {
+      Trajectory trajectory = trajectories_[static_cast<size_t>(&event - scenario_.events.data())];
+      trajectory.utime = now_utime_;
+      trajectory.start_utime = now_utime_;
+      trajectory.seq = trajectory_seq_++;
+      out.publish(trajectory);
+      break;
+    }
+  }
+}
+
+void MissionCore::onWallTime(double now_s) {
+  if (clock_wall_s_ < 0.0 || now_utime_ != clock_seen_at_wall_) {
+    if (now_utime_ != clock_seen_at_wall_) health_.setState(ProcessState::kRunning);
+    clock_seen_at_wall_ = now_utime_;
+    clock_wall_s_ = now_s;
+    return;
+  }
+  if (now_s - clock_wall_s_ > options_.no_clock_timeout_s) clock_lost_ = true;
+}
+
+std::string describeEvent(const ScenarioEvent& event) {
+  char text[256];
+  switch (event.kind) {
+    case ScenarioEvent::Kind::kCommand: {
+      static const char* names[] = {"?", "arm", "disarm", "takeoff", "goto", "land"};
+      const int index = static_cast<int>(event.command.command);
+      std::snprintf(text, sizeof text, "command %s (%.2f, %.2f, %.2f) yaw %.2f",
+                    names[index >= 1 && index <= 5 ? index : 0], event.command.position[0], event.command.position[1],
+                    event.command.position[2], event.command.yaw);
+      break;
+    }
+    case ScenarioEvent::Kind::kDisturbance:
+      if (event.disturbance.mode == DisturbanceMode::kHold) {
+        std::snprintf(text, sizeof text, "disturbance hold at (%.2f, %.2f, %.2f) m, %.0f N/m, for %.2f s",
+                      event.disturbance.hold_position[0], event.disturbance.hold_position[1],
+                      event.disturbance.hold_position[2], event.disturbance.hold_stiffness, event.disturbance.duration);
+      } else {
+        std::snprintf(text, sizeof text, "disturbance force (%.2f, %.2f, %.2f) N for %.2f s", event.disturbance.force[0],
+                      event.disturbance.force[1], event.disturbance.force[2], event.disturbance.duration);
+      }
+      break;
+    case ScenarioEvent::Kind::kParams:
+      std::snprintf(text, sizeof text, "params mask %d", event.params.field_mask);
+      break;
+    case ScenarioEvent::Kind::kTrajectory:
+      std::snprintf(text, sizeof text, "trajectory %s x%d (%s tracking)", event.trajectory.generator.c_str(),
+                    event.trajectory.laps,
+                    event.trajectory.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial");
+      break;
+  }
+  std::string line = text;
+  if (!event.label.empty()) line += "  [" + event.label + "]";
+  return line;
+}
+
+void logEventToStderr(const ScenarioEvent& event, int64_t utime) {
+  std::fprintf(stderr, "sdlqr-mission: t=%7.3f s  %s\n", 1e-6 * static_cast<double>(utime), describeEvent(event).c_str());
+}
+
+}  // namespace sdlqr::mission
