@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "sdlqr/config/cli.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/health/validate.hpp"
 #include "sdlqr/health/watchdog.hpp"
 #include "sdlqr/controller/state_dependent_lqr.hpp"
@@ -29,10 +30,17 @@ int main(int argc, char** argv) {
     const LqrParams lqr = LqrParams::load(config.child("lqr"));
     const controller::ControllerParams params = controller::ControllerParams::load(config.child("controller"));
     const FaultParams faults = FaultParams::load(config.child("faults"));
+    const ValidationLimits limits = ValidationLimits::load(config.child("validation"));
+    throwIfInvalid(config.child("lqr"), lqrLimitsInvalidReason(lqr, limits));
+    if (options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-controller", options.config_path,
+                         {printedSection("lqr", lqr), printedSection("controller", params),
+                          printedSection("faults", faults), printedSection("validation", limits)});
+      return 0;
+    }
     controller::StateDependentLqr lqr_controller(lqr, params);
 
     bus::Node bus("sdlqr-controller", options);
-    const ValidationLimits limits;
     bus::Counters::Id reject_ids[static_cast<int>(RejectReason::kCount)];
     for (int i = 0; i < static_cast<int>(RejectReason::kCount); ++i) {
       reject_ids[i] = bus.counters().add(counterName(static_cast<RejectReason>(i)));
@@ -42,6 +50,7 @@ int main(int argc, char** argv) {
     const auto stale_id = bus.counters().add("controller.stale_ticks");
     const auto saturated_id = bus.counters().add("controller.saturated_ticks");
     const auto trajectory_refused_id = bus.counters().add("reject.trajectory_refused");
+    const auto params_refused_id = bus.counters().add("reject.params_invalid");
     // GAINS age is judged in simulation time by the library (stale, then the hover K); the
     // STATE_EST watchdog runs on wall time, since a silent estimator brings no time at all.
     const auto gains_freshness_id = bus.counters().add("watchdog.gains.freshness");  // 0 fresh, 1 stale, 2 fallback
@@ -112,7 +121,11 @@ int main(int argc, char** argv) {
       RejectReason reason = validate(update, limits);
       if (reason == RejectReason::kNone) reason = params_order.offer(update.utime, update.seq, now_utime);
       if (reject(reason)) return;
-      lqr_controller.applyParams(update);
+      const ParamsOutcome outcome = lqr_controller.applyParams(update);
+      if (outcome == ParamsOutcome::kInvalid) {
+        bus.countRejected(params_refused_id);
+        bus.setLastError("PARAMS seq " + std::to_string(update.seq) + " refused: the LQR parameters refuse it");
+      }
     }, 16);
 
     std::cerr << "sdlqr-controller: running on " << bus.channel(channel::kStateEstimate) << "\n";

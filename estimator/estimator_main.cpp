@@ -3,12 +3,14 @@
 
 #include <chrono>
 #include <cstdint>
+#include <iostream>
 #include <string>
 #include <vector>
 
 #include "sdlqr/messages/channels.hpp"
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/config/config.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/estimator/estimator.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
@@ -102,6 +104,11 @@ int main(int argc, char** argv) {
       // The vehicle file's reader: an unknown section is an error here as in every process.
       const sdlqr::ConfigReader root = sdlqr::loadVehicleConfig(options.config_path);
       params = sdlqr::estimator::EstimatorParams::load(root.child("estimator"));
+    }
+    if (options.print_config) {
+      sdlqr::printProcessConfig(std::cout, "sdlqr-estimator", options.config_path,
+                                {sdlqr::printedSection("estimator", params)});
+      return 0;
     }
     Estimator estimator(params);
 

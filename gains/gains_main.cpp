@@ -8,6 +8,7 @@
 
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/config/config.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/math/lqr.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/health/validate.hpp"
@@ -24,10 +25,9 @@ namespace {
 using namespace sdlqr;
 
 int runOnBus(const ProcessOptions& options, const LqrParams& lqr, const gains::GainsParams& params,
-             const FaultParams& faults) {
+             const FaultParams& faults, const ValidationLimits& limits) {
   gains::GainScheduler scheduler(lqr, params.rate_hz);
   bus::Node bus("sdlqr-gains", options);
-  const ValidationLimits limits;
   bus::Counters::Id reject_ids[static_cast<int>(RejectReason::kCount)];
   for (int i = 0; i < static_cast<int>(RejectReason::kCount); ++i) {
     reject_ids[i] = bus.counters().add(counterName(static_cast<RejectReason>(i)));
@@ -78,7 +78,10 @@ int runOnBus(const ProcessOptions& options, const LqrParams& lqr, const gains::G
   bus.subscribe<params_t>(channel::kParams, [&](const params_t& msg) {
     const ParamsUpdate update = bus::fromLcm(msg);
     if (reject(validate(update, limits))) return;
-    if (!scheduler.applyParams(update)) {
+    const ParamsOutcome outcome = scheduler.applyParams(update);
+    if (outcome == ParamsOutcome::kNotNewer) {
+      bus.countRejected(reject_ids[static_cast<int>(RejectReason::kTimeBackwards)]);
+    } else if (outcome == ParamsOutcome::kInvalid) {
       bus.countRejected(params_refused_id);
       bus.setLastError("PARAMS seq " + std::to_string(update.seq) + " refused: the weights or limits are invalid");
     }
@@ -125,8 +128,20 @@ int main(int argc, char** argv) {
     }
     if (!once) {
       if (!state_text.empty() || !input_text.empty()) throw std::invalid_argument("--state and --input need --once");
-      return runOnBus(options, params, gains::GainsParams::load(config.child("gains")),
-                      FaultParams::load(config.child("faults")));
+      const gains::GainsParams gains_params = gains::GainsParams::load(config.child("gains"));
+      const FaultParams faults = FaultParams::load(config.child("faults"));
+      const ValidationLimits limits = ValidationLimits::load(config.child("validation"));
+      if (options.print_config) {
+        printProcessConfig(std::cout, "sdlqr-gains", options.config_path,
+                           {printedSection("lqr", params), printedSection("gains", gains_params),
+                            printedSection("faults", faults), printedSection("validation", limits)});
+        return 0;
+      }
+      return runOnBus(options, params, gains_params, faults, limits);
+    }
+    if (options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-gains --once", options.config_path, {printedSection("lqr", params)});
+      return 0;
     }
     if (state_text.empty() || input_text.empty()) throw std::invalid_argument("--once needs --state and --input");
 

@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <iostream>
 #include <string>
 
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/config/config.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/health/validate.hpp"
 #include "sdlqr/health/watchdog.hpp"
@@ -44,12 +46,22 @@ int main(int argc, char** argv) {
 
     const ConfigReader config = loadVehicleConfig(options.config_path);
     const VehicleParams vehicle = VehicleParams::load(config.child("vehicle"));
-    const double gravity = LqrParams::load(config.child("lqr")).gravity;
+    const LqrParams lqr = LqrParams::load(config.child("lqr"));
+    const double gravity = lqr.gravity;
     const ConfigReader lowlevel_config = config.child("lowlevel");
     const lowlevel::LowlevelParams params = lowlevel::LowlevelParams::load(lowlevel_config);
     lowlevel::throwIfInvalid(lowlevel_config, params.invalidReasonFor(vehicle, gravity));
-    lowlevel::BodyrateLoop loop(vehicle, params, gravity);
+    const ValidationLimits limits = ValidationLimits::load(config.child("validation"));
+    lowlevel::throwIfInvalid(lowlevel_config, params.invalidReasonFor(limits));
     const FaultParams faults = FaultParams::load(config.child("faults"));
+    if (options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-lowlevel", options.config_path,
+                         {printedSection("vehicle", vehicle), printedSection("lqr", lqr),
+                          printedSection("lowlevel", params), printedSection("faults", faults),
+                          printedSection("validation", limits)});
+      return 0;
+    }
+    lowlevel::BodyrateLoop loop(vehicle, params, limits, gravity);
 
     bus::Node bus("sdlqr-lowlevel", options);
     bus::Counters& counters = bus.counters();
@@ -73,7 +85,6 @@ int main(int argc, char** argv) {
     Watchdog rate_watchdog(params.rate_cmd_timeout);
     bus::WatchdogReport imu_report(counters, "imu");
     bus::WatchdogReport rate_report(counters, "rate_cmd");
-    const ValidationLimits limits;
     // COMMAND and PARAMS are rare and each one changes the flight: a replayed old one (same or
     // older utime and seq) or one from the future is refused.
     OrderGate command_order, params_order;

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "sdlqr/config/cli.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/mission/command_resender.hpp"
 #include "sdlqr/mission/mission_player.hpp"
 #include "sdlqr/mission/trajectory_request.hpp"
@@ -81,6 +82,11 @@ int main(int argc, char** argv) {
     const LqrParams lqr = LqrParams::load(vehicle_config.child("lqr"));
     const trajectory::TrajectoryParams trajectory_params =
         trajectory::TrajectoryParams::load(vehicle_config.child("trajectory"));
+    if (options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-mission", options.config_path.empty() ? scenario.vehicle_path : options.config_path,
+                         {printedSection("lqr", lqr), printedSection("trajectory", trajectory_params)});
+      return 0;
+    }
     // Trajectories are generated before the flight so a bad request fails here, not mid-air.
     std::vector<Trajectory> trajectories(scenario.events.size());
     for (size_t i = 0; i < scenario.events.size(); ++i) {

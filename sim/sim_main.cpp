@@ -12,6 +12,7 @@
 
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/config/config.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/health/validate.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
@@ -78,6 +79,11 @@ int run(int argc, char** argv) {
   const VehicleParams vehicle = VehicleParams::load(config.child("vehicle"));
   sim::SimParams params = sim::SimParams::load(config.child("sim"));
   if (options.seed >= 0) params.seed = options.seed;
+  if (options.process.print_config) {
+    printProcessConfig(std::cout, "sdlqr-sim", options.process.config_path,
+                       {printedSection("vehicle", vehicle), printedSection("sim", params)});
+    return 0;
+  }
   sim::Simulator simulator(vehicle, params);
 
   bus::Node node("sdlqr-sim", options.process);

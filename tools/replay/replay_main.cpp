@@ -14,6 +14,7 @@
 #include "sdlqr/messages/channels.hpp"
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/config/config.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
 #include "sdlqr/replay/flight_loader.hpp"
@@ -129,6 +130,14 @@ int main(int argc, char** argv) {
     params.lqr = LqrParams::load(config.child("lqr"));
     params.controller = controller::ControllerParams::load(config.child("controller"));
     params.gains = gains::GainsParams::load(config.child("gains"));
+    params.validation = ValidationLimits::load(config.child("validation"));
+    if (options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-replay", options.config_path,
+                         {printedSection("lqr", params.lqr), printedSection("estimator", params.estimator),
+                          printedSection("controller", params.controller), printedSection("gains", params.gains),
+                          printedSection("validation", params.validation)});
+      return 0;
+    }
 
     const auto load_start = std::chrono::steady_clock::now();
     replay::LoadStats load;

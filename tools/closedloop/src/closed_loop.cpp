@@ -4,20 +4,6 @@
 
 namespace sdlqr::closedloop {
 
-StackConfig StackConfig::load(const std::string& vehicle_file) {
-  const ConfigReader root = loadVehicleConfig(vehicle_file);
-  StackConfig c;
-  c.vehicle = VehicleParams::load(root.child("vehicle"));
-  c.lqr = LqrParams::load(root.child("lqr"));
-  c.sim = sim::SimParams::load(root.child("sim"));
-  c.estimator = estimator::EstimatorParams::load(root.child("estimator"));
-  c.lowlevel = lowlevel::LowlevelParams::load(root.child("lowlevel"));
-  c.controller = controller::ControllerParams::load(root.child("controller"));
-  c.gains = gains::GainsParams::load(root.child("gains"));
-  c.trajectory = trajectory::TrajectoryParams::load(root.child("trajectory"));
-  return c;
-}
-
 namespace {
 
 sim::SimParams withSeed(sim::SimParams params, long long seed) {
@@ -33,7 +19,7 @@ ClosedLoop::ClosedLoop(const StackConfig& config, const mission::Scenario& scena
       record_(record),
       sim_(config.vehicle, withSeed(config.sim, scenario.seed)),
       estimator_(config.estimator),
-      lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity),
+      lowlevel_(config.vehicle, config.lowlevel, config.validation, config.lqr.gravity),
       controller_(config.lqr, config.controller),
       gains_(config.lqr, config.gains.rate_hz),
       player_(scenario_),

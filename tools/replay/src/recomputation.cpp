@@ -43,6 +43,7 @@ Recomputation::Recomputation(const ReplayParams& params, const RecordedFlight& f
       solve_period_us_(static_cast<int64_t>(1e6 / params.gains.rate_hz + 0.5)),
       controller_(params.lqr, params.controller),
       tick_period_us_(static_cast<int64_t>(1e6 / params.controller.rate_hz + 0.5)),
+      limits_(params.validation),
       recorded_gains_(indexBySeq(flight.gains)),
       recorded_reference_(indexBySeq(flight.reference)),
       recorded_estimate_(indexBySeq(flight.state_estimate)) {}
@@ -246,7 +247,7 @@ void Recomputation::onTrajectory(const Trajectory& trajectory) {
 void Recomputation::onParams(const ParamsUpdate& update) {
   if (rejected(validate(update, limits_))) return;
   controller_.applyParams(update);
-  if (!scheduler_.applyParams(update)) ++pairing_.rejected;
+  if (scheduler_.applyParams(update) != ParamsOutcome::kApplied) ++pairing_.rejected;
 }
 
 }  // namespace sdlqr::replay

@@ -20,6 +20,7 @@ inline ReplayParams paramsOf(const closedloop::StackConfig& c) {
   p.lqr = c.lqr;
   p.controller = c.controller;
   p.gains = c.gains;
+  p.validation = c.validation;
   return p;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// The in-process closed loop (DESIGN §8): the same libraries the flight processes run — plant,
+// The in-process closed loop: the same libraries the flight processes run — plant,
 // estimator, gain solver, controller, bodyrate loop, scenario player — stepped together without a
 // bus. Each message reaches its consumers within the physics step that produced it, in the order
 // the processes would see it (the bodyrate loop acts on an IMU sample before the command computed
@@ -24,26 +24,16 @@
 #include "sdlqr/lowlevel/lowlevel_params.hpp"
 #include "sdlqr/mission/mission_player.hpp"
 #include "sdlqr/mission/scenario.hpp"
+#include "sdlqr/params/vehicle_file.hpp"
 #include "sdlqr/sim/sim_params.hpp"
 #include "sdlqr/sim/simulator.hpp"
 #include "sdlqr/trajectory/params.hpp"
 
 namespace sdlqr::closedloop {
 
-// Every section of a vehicle file, as the processes read them.
-struct StackConfig {
-  VehicleParams vehicle;
-  LqrParams lqr;
-  sim::SimParams sim;
-  estimator::EstimatorParams estimator;
-  lowlevel::LowlevelParams lowlevel;
-  controller::ControllerParams controller;
-  gains::GainsParams gains;
-  trajectory::TrajectoryParams trajectory;
-
-  // Throws ConfigError naming the key.
-  static StackConfig load(const std::string& vehicle_file);
-};
+// Every section of a vehicle file, as the processes read them (StackConfig::load throws
+// ConfigError naming the key).
+using StackConfig = params::VehicleFile;
 
 struct RecordOptions {
   bool imu = false;         // 1 kHz: large; off unless asked for

@@ -41,6 +41,7 @@ struct ReplayParams {
   LqrParams lqr;
   controller::ControllerParams controller;
   gains::GainsParams gains;
+  ValidationLimits validation;
 };
 
 // How the pairing was honoured.
