@@ -65,6 +65,7 @@ std::string commandOf(const std::string& executable) {
   std::string command = quoted(std::string(SDLQR_BUILD_DIR) + "/" + executable);
   if (executable == "bin/sdlqr-mission") command += " " + quoted(SDLQR_SCENARIO_FILE);
   if (executable == "bin/sdlqr-replay") command += " " + quoted(std::string(SDLQR_BUILD_DIR) + "/no_such_flight.lcmlog");
+  if (executable == "bin/sdlqr-trajectory") command += " minsnap_fast --output /dev/null";
   return command;
 }
 

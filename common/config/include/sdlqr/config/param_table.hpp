@@ -59,8 +59,6 @@ class ParamSection {
   virtual std::vector<ParamInfo> params() const = 0;
   // Dotted paths of the nested sections ("imu", "battery"), in declaration order.
   virtual std::vector<std::string> subsections() const = 0;
-  // The keys with their defaults, one a line (the caller writes the "section:" line).
-  virtual void printDefaults(YamlWriter& out) const = 0;
   // Loads the section as its struct's load() does and drops the result: throws the same ConfigError.
   virtual void checkLoads(const ConfigReader& reader) const = 0;
 
@@ -226,6 +224,7 @@ class ParamTable final : public ParamSection {
   template <class S>
   ParamTable& section(const char* key, S T::*member) {
     const ParamTable<S>* nested = &S::declaration();
+    // Its keys are the nested table's: params() lists those, never this field's own info.
     Field& f = add(key, ParamKind::kNumber, "", Range::finite(), nested->help().c_str());
     f.nested = nested;
     f.set_default = [member, nested](T& p) { nested->setDefaults(p.*member); };
@@ -313,7 +312,6 @@ class ParamTable final : public ParamSection {
     }
     return out;
   }
-  void printDefaults(YamlWriter& out) const override { print(T(), out); }
   void checkLoads(const ConfigReader& reader) const override { load(reader); }
 
  private:
