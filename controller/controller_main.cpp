@@ -5,6 +5,7 @@
 
 #include "sdlqr/bus/core_binding.hpp"
 #include "sdlqr/config/cli.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/controller/controller_core.hpp"
 
 using namespace sdlqr;
@@ -18,8 +19,18 @@ int main(int argc, char** argv) {
         "In: STATE_EST, GAINS, TRAJECTORY, PARAMS, COMMAND.  Out: RATE_CMD, REFERENCE, HEARTBEAT.");
 
     const ConfigReader config = loadVehicleConfig(options.config_path);
-    ControllerCore core(LqrParams::load(config.child("lqr")), controller::ControllerParams::load(config.child("controller")),
-                        FaultParams::load(config.child("faults")));
+    const LqrParams lqr = LqrParams::load(config.child("lqr"));
+    const auto params = controller::ControllerParams::load(config.child("controller"));
+    const FaultParams faults = FaultParams::load(config.child("faults"));
+    const ValidationLimits limits = ValidationLimits::load(config.child("validation"));
+    throwIfInvalid(config.child("lqr"), lqrLimitsInvalidReason(lqr, limits));
+    if (options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-controller", options.config_path,
+                         {printedSection("lqr", lqr), printedSection("controller", params),
+                          printedSection("faults", faults), printedSection("validation", limits)});
+      return 0;
+    }
+    ControllerCore core(lqr, params, faults, limits);
     bus::Node node("sdlqr-controller", options, core.health());
     bus::CoreBinding<ControllerCore> bus(node, core);
     // A tick that takes longer than the estimate period delays the next estimate's tick.

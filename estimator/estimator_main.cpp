@@ -1,10 +1,12 @@
 // sdlqr-estimator: binds the bus to the estimator's core (estimator/estimator_core.hpp).
 
 #include <chrono>
+#include <iostream>
 
 #include "sdlqr/bus/core_binding.hpp"
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/config/config.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/estimator/estimator_core.hpp"
 
 using namespace sdlqr;
@@ -20,6 +22,10 @@ int main(int argc, char** argv) {
     estimator::EstimatorParams params;
     // The vehicle file's reader: an unknown section is an error here as in every process.
     if (!options.config_path.empty()) params = estimator::EstimatorParams::load(loadVehicleConfig(options.config_path).child("estimator"));
+    if (options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-estimator", options.config_path, {printedSection("estimator", params)});
+      return 0;
+    }
     EstimatorCore core(params);
     bus::Node node("sdlqr-estimator", options, core.health());
     bus::CoreBinding<EstimatorCore> bus(node, core);

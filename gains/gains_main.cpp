@@ -8,6 +8,7 @@
 
 #include "sdlqr/bus/core_binding.hpp"
 #include "sdlqr/config/cli.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/gains/gains_cli.hpp"
 #include "sdlqr/gains/gains_core.hpp"
 
@@ -25,11 +26,23 @@ int main(int argc, char** argv) {
     parser.parseOrExit(argc, argv);
     const ConfigReader config = loadVehicleConfig(options.config_path);
     const LqrParams lqr = gains::lqrParamsWithMethod(config.child("lqr"), once);
+    if (once.once && options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-gains --once", options.config_path, {printedSection("lqr", lqr)});
+      return 0;
+    }
     if (once.once) return gains::solveOnce(once, lqr, std::cout);
     gains::requireBusMode(once);
 
     const gains::GainsParams params = gains::GainsParams::load(config.child("gains"));
-    GainsCore core(lqr, params, FaultParams::load(config.child("faults")), {}, &bus::monotonicSeconds);
+    const FaultParams faults = FaultParams::load(config.child("faults"));
+    const ValidationLimits limits = ValidationLimits::load(config.child("validation"));
+    if (options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-gains", options.config_path,
+                         {printedSection("lqr", lqr), printedSection("gains", params), printedSection("faults", faults),
+                          printedSection("validation", limits)});
+      return 0;
+    }
+    GainsCore core(lqr, params, faults, limits, &bus::monotonicSeconds);
     bus::Node node("sdlqr-gains", options, core.health());
     bus::CoreBinding<GainsCore> bus(node, core);
     // A solve that outlasts the estimate period makes the next estimate wait (the 10 Hz schedule

@@ -6,6 +6,7 @@
 
 #include "sdlqr/bus/core_binding.hpp"
 #include "sdlqr/config/cli.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/mission/mission_cli.hpp"
 #include "sdlqr/mission/mission_core.hpp"
 
@@ -27,8 +28,14 @@ int main(int argc, char** argv) {
     const mission::Scenario scenario = mission::loadScenarioArgument(positional, mission_options);
     const std::string vehicle_path = options.config_path.empty() ? scenario.vehicle_path : options.config_path;
     const ConfigReader vehicle = loadVehicleConfig(vehicle_path);
-    mission::MissionCore core(scenario, trajectory::TrajectoryParams::load(vehicle.child("trajectory")),
-                              LqrParams::load(vehicle.child("lqr")), mission_options);
+    const auto trajectory_params = trajectory::TrajectoryParams::load(vehicle.child("trajectory"));
+    const LqrParams lqr = LqrParams::load(vehicle.child("lqr"));
+    if (options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-mission", vehicle_path,
+                         {printedSection("lqr", lqr), printedSection("trajectory", trajectory_params)});
+      return 0;
+    }
+    mission::MissionCore core(scenario, trajectory_params, lqr, mission_options);
     if (describe_only) return mission::printDescription(scenario, vehicle_path);
 
     bus::Node node("sdlqr-mission", options, core.health());

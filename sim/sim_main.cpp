@@ -7,6 +7,7 @@
 #include "sdlqr/bus/core_binding.hpp"
 #include "sdlqr/bus/paced_loop.hpp"
 #include "sdlqr/config/config.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/sim/sim_cli.hpp"
 #include "sdlqr/sim/sim_core.hpp"
 
@@ -19,7 +20,13 @@ int main(int argc, char** argv) {
     const ConfigReader config = loadVehicleConfig(options.process.config_path);
     sim::SimParams params = sim::SimParams::load(config.child("sim"));
     if (options.seed >= 0) params.seed = options.seed;
-    SimCore core(VehicleParams::load(config.child("vehicle")), params);
+    const VehicleParams vehicle = VehicleParams::load(config.child("vehicle"));
+    if (options.process.print_config) {
+      printProcessConfig(std::cout, "sdlqr-sim", options.process.config_path,
+                         {printedSection("vehicle", vehicle), printedSection("sim", params)});
+      return 0;
+    }
+    SimCore core(vehicle, params);
 
     bus::Node node("sdlqr-sim", options.process, core.health());
     bus::CoreBinding<SimCore> bus(node, core);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sdlqr/config/cli.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/trajectory/feasibility.hpp"
 #include "sdlqr/trajectory/paper_cases.hpp"
@@ -39,6 +40,7 @@ struct Options {
   bool periodic = false;
   bool temporal = false;
   bool require_feasible = false;
+  bool print_config = false;
   std::vector<std::string> sources;
 };
 
@@ -57,6 +59,9 @@ int run(int argc, const char* const* argv) {
   parser.addFlag("--periodic", &o.periodic, "min-snap: one closed periodic lap instead of rest to rest");
   parser.addFlag("--temporal", &o.temporal, "mark the trajectory for temporal tracking (default spatial)");
   parser.addFlag("--require-feasible", &o.require_feasible, "exit 3 when a limit is violated");
+  parser.addFlag("--print-config", &o.print_config,
+                 "print the lqr and trajectory sections as they would be used (defaults, --config,\n"
+                 "                          --periodic, --dt), as YAML, and exit");
   parser.allowPositional(&o.sources, "[SOURCE]");
   parser.setEpilog(
       "examples:\n"
@@ -66,13 +71,13 @@ int run(int argc, const char* const* argv) {
       "exit codes: 0 done, 2 bad input or configuration, 3 infeasible with --require-feasible");
   parser.parseOrExit(argc, argv);
 
-  if (o.sources.size() + (o.check_path.empty() ? 0 : 1) != 1) {
+  if (!o.print_config && o.sources.size() + (o.check_path.empty() ? 0 : 1) != 1) {
     throw std::invalid_argument("give exactly one SOURCE or --check FILE (see --help)");
   }
   LqrParams lqr;
   TrajectoryParams params;
   if (!o.config_path.empty()) {
-    const ConfigReader root(loadYamlFile(o.config_path), "");
+    const ConfigReader root = loadVehicleConfig(o.config_path);
     lqr = LqrParams::load(root.child("lqr"));
     params = TrajectoryParams::load(root.child("trajectory"));
   }
@@ -81,6 +86,11 @@ int run(int argc, const char* const* argv) {
     if (!(o.dt > 0.0)) throw std::invalid_argument("--dt: must be > 0");
     params.sample_dt = o.dt;
     if (params.check_dt > o.dt) params.check_dt = o.dt;
+  }
+  if (o.print_config) {
+    printProcessConfig(std::cout, "sdlqr-trajectory", o.config_path,
+                       {printedSection("lqr", lqr), printedSection("trajectory", params)});
+    return 0;
   }
   const bool v_max_given = !std::isnan(o.v_max);
   if (v_max_given && !(o.v_max > 0.0)) throw std::invalid_argument("--v-max: must be > 0");

@@ -70,8 +70,13 @@ RejectReason ControllerCore::onTrajectory(const Trajectory& trajectory) {
 }
 
 RejectReason ControllerCore::onParams(const ParamsUpdate& update) {
-  return health_.admit(Stream::kParams, admitOrdered(update, limits_, params_order_, state_clock_.now()),
-                       [&] { lqr_.applyParams(update); });
+  RejectReason reason = admitOrdered(update, limits_, params_order_, state_clock_.now());
+  if (reason == RejectReason::kNone) reason = rejectionOf(lqr_.applyParams(update));
+  if (reason == RejectReason::kRefused) {
+    health_.setLastError("PARAMS seq " + std::to_string(update.seq) + " refused: the LQR parameters refuse it");
+  }
+  health_.reject(Stream::kParams, reason);
+  return reason;
 }
 
 void ControllerCore::onWallTime(double now_s) {

@@ -2,54 +2,39 @@
 
 namespace sdlqr::controller {
 
-ControllerParams ControllerParams::load(const ConfigReader& controller) {
-  controller.allowOnly({"rate_hz", "max_prediction_s", "gains_stale_s", "gains_fallback_s", "max_position_error", "max_velocity_error",
-                        "takeoff_speed", "landing_speed", "landed_speed", "landed_time", "landing_undershoot",
-                        "rejoin_height", "tracking"});
-  ControllerParams p;
-  controller.read("rate_hz", p.rate_hz);
-  controller.read("max_prediction_s", p.max_prediction_s);
-  controller.read("gains_stale_s", p.gains_stale_s);
-  controller.read("gains_fallback_s", p.gains_fallback_s);
-  controller.read("max_position_error", p.max_position_error);
-  controller.read("max_velocity_error", p.max_velocity_error);
-  controller.read("takeoff_speed", p.takeoff_speed);
-  controller.read("landing_speed", p.landing_speed);
-  controller.read("landed_speed", p.landed_speed);
-  controller.read("landed_time", p.landed_time);
-  controller.read("landing_undershoot", p.landing_undershoot);
-  controller.read("rejoin_height", p.rejoin_height);
-  std::string tracking = p.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial";
-  controller.read("tracking", tracking);
-  if (tracking == "spatial") {
-    p.tracking = ReferenceMode::kSpatial;
-  } else if (tracking == "temporal") {
-    p.tracking = ReferenceMode::kTemporal;
-  } else {
-    throw ConfigError(controller.keyPath("tracking"), "expected spatial or temporal");
-  }
-  const std::string reason = p.invalidReason();
-  if (!reason.empty()) {
-    const auto colon = reason.find(':');
-    throw ConfigError(controller.keyPath(reason.substr(0, colon)), reason.substr(colon + 2));
-  }
-  return p;
-}
+ControllerParams::ControllerParams() { declaration().setDefaults(*this); }
 
-std::string ControllerParams::invalidReason() const {
-  if (!(rate_hz >= 1.0 && rate_hz <= 1000.0)) return "rate_hz: must be in [1, 1000] Hz";
-  if (!(max_prediction_s >= 0.0 && max_prediction_s <= 0.02)) return "max_prediction_s: must be in [0, 0.02] s";
-  if (!(gains_stale_s > 0.0)) return "gains_stale_s: must be > 0";
-  if (!(gains_fallback_s > gains_stale_s)) return "gains_fallback_s: must be > gains_stale_s";
-  if (!(max_position_error > 0.0)) return "max_position_error: must be > 0";
-  if (!(max_velocity_error > 0.0)) return "max_velocity_error: must be > 0";
-  if (!(takeoff_speed > 0.0 && takeoff_speed <= 5.0)) return "takeoff_speed: must be in (0, 5] m/s";
-  if (!(landing_speed > 0.0 && landing_speed <= 2.0)) return "landing_speed: must be in (0, 2] m/s";
-  if (!(landed_speed > 0.0)) return "landed_speed: must be > 0";
-  if (!(landed_time >= 0.0)) return "landed_time: must be >= 0";
-  if (!(landing_undershoot >= 0.0 && landing_undershoot <= 2.0)) return "landing_undershoot: must be in [0, 2] m";
-  if (!(rejoin_height > 0.0 && rejoin_height <= 10.0)) return "rejoin_height: must be in (0, 10] m";
-  return {};
+const ParamTable<ControllerParams>& ControllerParams::declaration() {
+  static const ParamTable<ControllerParams> table = [] {
+    using P = ControllerParams;
+    ParamTable<P> t("100 Hz state-dependent LQR (sdlqr-controller)");
+    t.number("rate_hz", &P::rate_hz, 100.0, "Hz", Range::closed(1.0, 1000.0), "control rate in simulation time (paper: 100 Hz)");
+    t.number("max_prediction_s", &P::max_prediction_s, 0.005, "s", Range::closed(0.0, 0.02),
+             "longest an estimate is carried forward to a tick (0: never)");
+    t.number("gains_stale_s", &P::gains_stale_s, 0.3, "s", Range::above(0.0),
+             "GAINS older than this are flagged stale (3 missed updates)");
+    t.number("gains_fallback_s", &P::gains_fallback_s, 1.0, "s", Range::above(0.0),
+             "GAINS older than this: switch to the precomputed hover K");
+    t.number("max_position_error", &P::max_position_error, 1.0, "m", Range::above(0.0),
+             "norm bound on p - p_ref fed to K (paper §IV-A)");
+    t.number("max_velocity_error", &P::max_velocity_error, 2.0, "m/s", Range::above(0.0), "norm bound on v - v_ref fed to K");
+    t.number("takeoff_speed", &P::takeoff_speed, 0.5, "m/s", Range::openClosed(0.0, 5.0), "climb rate of the take-off reference");
+    t.number("landing_speed", &P::landing_speed, 0.4, "m/s", Range::openClosed(0.0, 2.0),
+             "descent rate of the landing reference");
+    t.number("landed_speed", &P::landed_speed, 0.1, "m/s", Range::above(0.0),
+             "below this, near the ground, for landed_time: landed");
+    t.number("landed_time", &P::landed_time, 1.0, "s", Range::atLeast(0.0), "how long landed_speed must hold");
+    t.number("landing_undershoot", &P::landing_undershoot, 0.3, "m", Range::closed(0.0, 2.0),
+             "the landing reference continues this far below the ground");
+    t.number("rejoin_height", &P::rejoin_height, 0.2, "m", Range::openClosed(0.0, 10.0),
+             "a restarted controller seeing the vehicle this high rejoins in a hold");
+    t.choice("tracking", &P::tracking, ReferenceMode::kSpatial,
+             {{"spatial", ReferenceMode::kSpatial}, {"temporal", ReferenceMode::kTemporal}},
+             "reference scheme of trajectories that do not say (spatial or temporal)");
+    t.check("gains_fallback_s", [](const P& p) { return p.gains_fallback_s > p.gains_stale_s; }, "must be > gains_stale_s");
+    return t;
+  }();
+  return table;
 }
 
 }  // namespace sdlqr::controller

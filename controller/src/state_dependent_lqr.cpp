@@ -10,9 +10,13 @@ namespace sdlqr::controller {
 
 namespace {
 
-GainMatrix solveHoverGain(const LqrParams& lqr) {
+LqrResult solveHover(const LqrParams& lqr) {
   const State hover = makeState(Vec3::Zero(), identityQuat(), Vec3::Zero());
-  const LqrResult result = solveLqr(hover, makeInput(Vec3::Zero(), lqr.gravity), lqr);
+  return solveLqr(hover, makeInput(Vec3::Zero(), lqr.gravity), lqr);
+}
+
+GainMatrix solveHoverGain(const LqrParams& lqr) {
+  const LqrResult result = solveHover(lqr);
   if (result.status != SolveStatus::kOk) {
     throw std::runtime_error("no stabilizing hover gain for these weights: " +
                              std::string(result.reason ? result.reason : "solver failed"));
@@ -63,22 +67,18 @@ std::string StateDependentLqr::setTrajectory(const Trajectory& trajectory) {
   return references_.setTrajectory(trajectory, latest_.utime);
 }
 
-void StateDependentLqr::applyParams(const ParamsUpdate& update) {
-  params_seq_handled_ = update.seq;
-  LqrParams next = lqr_;
-  if (update.field_mask & ParamsUpdate::kLimits) {
-    next.omega_max = update.omega_max;
-    next.c_min = update.c_min;
-    next.c_max = update.c_max;
-  }
+ParamsOutcome StateDependentLqr::applyParams(const ParamsUpdate& update) {
+  RuntimeLqrParams next = lqr_;
+  const ParamsOutcome outcome = next.apply(update);
+  if (outcome != ParamsOutcome::kApplied) return outcome;
   if (update.field_mask & ParamsUpdate::kWeights) {
-    next.q_diag = update.q_diag;
-    next.r_diag = update.r_diag;
+    const LqrResult hover = solveHover(next.params());
+    if (hover.status != SolveStatus::kOk) return ParamsOutcome::kInvalid;
+    fallback_K_ = hover.K;
   }
   if (update.field_mask & ParamsUpdate::kTracking) references_.setTrackingMode(update.tracking, latest_.utime);
-  if (!next.valid()) return;  // validated upstream as well; never adopt an invalid set
-  if (update.field_mask & ParamsUpdate::kWeights) fallback_K_ = solveHoverGain(next);
   lqr_ = next;
+  return outcome;
 }
 
 const GainMatrix& StateDependentLqr::chooseGain(int64_t now_utime, GainsFreshness& freshness, int64_t& gains_seq) {
@@ -115,7 +115,7 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
   if (received.status == EstimatorStatus::kInitializing) return false;
   const StateEstimate estimate = tick_utime == received.utime
                                      ? received
-                                     : predictEstimate(received, last_thrust_, tick_utime, lqr_.gravity);
+                                     : predictEstimate(received, last_thrust_, tick_utime, lqr_.params().gravity);
 
   Reference& reference = out.reference;
   if (!references_.update(estimate, reference)) {
@@ -139,13 +139,13 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
 
   const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
   const ControlOutput control =
-      applyControlLaw(*K, q_lin, estimate.state(), reference.x, reference.u, lqr_, bounds);
+      applyControlLaw(*K, q_lin, estimate.state(), reference.x, reference.u, lqr_.params(), bounds);
 
   reference.utime = estimate.utime;
   reference.seq = reference_seq_++;
   reference.state_seq = estimate.seq;
   reference.command_seq = command_seq_handled_;
-  reference.params_seq = params_seq_handled_;
+  reference.params_seq = lqr_.seq();
 
   RateCommand& command = out.command;
   command.utime = estimate.utime;

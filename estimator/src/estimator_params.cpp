@@ -4,12 +4,6 @@
 
 namespace sdlqr::estimator {
 
-namespace {
-
-bool positive(double value) { return std::isfinite(value) && value > 0.0; }
-
-}  // namespace
-
 int64_t EstimatorParams::outputPeriodUs() const { return static_cast<int64_t>(std::llround(1e6 / output_rate)); }
 
 int EstimatorParams::historyCapacity() const {
@@ -19,87 +13,68 @@ int EstimatorParams::historyCapacity() const {
   return static_cast<int>(std::ceil(history_length / period - 1e-9)) + 2;
 }
 
-EstimatorParams EstimatorParams::load(const ConfigReader& estimator) {
-  estimator.allowOnly({"gyro_noise_density", "accel_noise_density", "gyro_bias_random_walk", "accel_bias_random_walk",
-                       "gyro_range", "accel_range", "accel_clip_level", "clip_velocity_std", "initial_velocity_std", "initial_gyro_bias_std",
-                       "initial_accel_bias_std", "vio_position_std", "vio_attitude_std", "output_rate",
-                       "history_length", "vio_timeout", "reinit_after", "gate_chi2", "vio_reset_after", "quaternion_norm_tolerance",
-                       "imu_max_gap", "imu_time_reset_count", "gravity"});
-  EstimatorParams p;
-  estimator.read("gyro_noise_density", p.gyro_noise_density);
-  estimator.read("accel_noise_density", p.accel_noise_density);
-  estimator.read("gyro_bias_random_walk", p.gyro_bias_random_walk);
-  estimator.read("accel_bias_random_walk", p.accel_bias_random_walk);
-  estimator.read("gyro_range", p.gyro_range);
-  estimator.read("accel_range", p.accel_range);
-  estimator.read("accel_clip_level", p.accel_clip_level);
-  estimator.read("clip_velocity_std", p.clip_velocity_std);
-  estimator.read("initial_velocity_std", p.initial_velocity_std);
-  estimator.read("initial_gyro_bias_std", p.initial_gyro_bias_std);
-  estimator.read("initial_accel_bias_std", p.initial_accel_bias_std);
-  estimator.read("vio_position_std", p.vio_position_std);
-  estimator.read("vio_attitude_std", p.vio_attitude_std);
-  estimator.read("output_rate", p.output_rate);
-  estimator.read("history_length", p.history_length);
-  estimator.read("vio_timeout", p.vio_timeout);
-  estimator.read("reinit_after", p.reinit_after);
-  estimator.read("gate_chi2", p.gate_chi2);
-  estimator.read("vio_reset_after", p.vio_reset_after);
-  estimator.read("quaternion_norm_tolerance", p.quaternion_norm_tolerance);
-  estimator.read("imu_max_gap", p.imu_max_gap);
-  estimator.read("imu_time_reset_count", p.imu_time_reset_count);
-  estimator.read("gravity", p.gravity);
-  const std::string reason = p.invalidReason();
-  if (!reason.empty()) {
-    const auto colon = reason.find(':');
-    throw ConfigError(estimator.keyPath(reason.substr(0, colon)), reason.substr(colon + 2));
-  }
-  return p;
-}
+EstimatorParams::EstimatorParams() { declaration().setDefaults(*this); }
 
-std::string EstimatorParams::invalidReason() const {
-  if (!positive(gyro_noise_density)) return "gyro_noise_density: must be finite and > 0";
-  if (!positive(accel_noise_density)) return "accel_noise_density: must be finite and > 0";
-  if (!positive(gyro_bias_random_walk)) return "gyro_bias_random_walk: must be finite and > 0";
-  if (!positive(accel_bias_random_walk)) return "accel_bias_random_walk: must be finite and > 0";
-  if (!positive(gyro_range)) return "gyro_range: must be finite and > 0";
-  if (!positive(accel_range)) return "accel_range: must be finite and > 0";
-  // Above accel_range a reading is rejected, so a higher clip level could never be seen.
-  if (!(positive(accel_clip_level) && accel_clip_level <= accel_range)) {
-    return "accel_clip_level: must be > 0 and <= accel_range";
-  }
-  if (!positive(clip_velocity_std)) return "clip_velocity_std: must be finite and > 0";
-  if (!positive(initial_velocity_std)) return "initial_velocity_std: must be finite and > 0";
-  if (!positive(initial_gyro_bias_std)) return "initial_gyro_bias_std: must be finite and > 0";
-  if (!positive(initial_accel_bias_std)) return "initial_accel_bias_std: must be finite and > 0";
-  if (!positive(vio_position_std)) return "vio_position_std: must be finite and > 0";
-  if (!positive(vio_attitude_std)) return "vio_attitude_std: must be finite and > 0";
-  if (!(std::isfinite(output_rate) && output_rate >= 1.0 && output_rate <= 1000.0)) {
-    return "output_rate: must be in [1, 1000] Hz";
-  }
-  const double period_us = 1e6 / output_rate;
-  if (std::abs(period_us - std::round(period_us)) > 1e-6) {
-    return "output_rate: 1e6 / output_rate must be a whole number of microseconds (e.g. 250, 200, 500)";
-  }
-  // 150 ms covers the 30-50 ms VIO latency of the simulator with margin for a late bus; 2 s bounds memory.
-  if (!(std::isfinite(history_length) && history_length >= 0.15 && history_length <= 2.0)) {
-    return "history_length: must be in [0.15, 2] s";
-  }
-  if (history_length * output_rate < 2.0) return "history_length: must span at least two output periods";
-  if (!positive(vio_timeout)) return "vio_timeout: must be finite and > 0";
-  if (!(std::isfinite(reinit_after) && reinit_after > vio_timeout)) return "reinit_after: must be finite and > vio_timeout";
-  if (!positive(gate_chi2)) return "gate_chi2: must be finite and > 0";
-  // Past reinit_after the next pose re-initialises anyway; a reset must come before that.
-  if (!(positive(vio_reset_after) && vio_reset_after < reinit_after)) {
-    return "vio_reset_after: must be > 0 and < reinit_after";
-  }
-  if (!(std::isfinite(quaternion_norm_tolerance) && quaternion_norm_tolerance > 0.0 && quaternion_norm_tolerance < 0.5)) {
-    return "quaternion_norm_tolerance: must be in (0, 0.5)";
-  }
-  if (!(std::isfinite(imu_max_gap) && imu_max_gap > 0.0 && imu_max_gap <= 1.0)) return "imu_max_gap: must be in (0, 1] s";
-  if (imu_time_reset_count < 1) return "imu_time_reset_count: must be >= 1";
-  if (!positive(gravity)) return "gravity: must be finite and > 0";
-  return {};
+const ParamTable<EstimatorParams>& EstimatorParams::declaration() {
+  static const ParamTable<EstimatorParams> table = [] {
+    using P = EstimatorParams;
+    ParamTable<P> t("error-state EKF, IMU + delayed VIO (sdlqr-estimator)");
+    const Range positive = Range::above(0.0);
+    t.number("gyro_noise_density", &P::gyro_noise_density, 5e-4, "rad/s/sqrt(Hz)", positive,
+             "white gyro noise (per-sample std 0.016 rad/s at 1 kHz)");
+    t.number("accel_noise_density", &P::accel_noise_density, 4e-3, "m/s^2/sqrt(Hz)", positive,
+             "white accelerometer noise");
+    t.number("gyro_bias_random_walk", &P::gyro_bias_random_walk, 2e-5, "rad/s^2/sqrt(Hz)", positive, "gyro bias drift");
+    t.number("accel_bias_random_walk", &P::accel_bias_random_walk, 2e-4, "m/s^3/sqrt(Hz)", positive,
+             "accelerometer bias drift");
+    t.number("gyro_range", &P::gyro_range, 35.0, "rad/s", positive,
+             "per axis; larger readings are rejected (sensor clips at 34.9)");
+    t.number("accel_range", &P::accel_range, 160.0, "m/s^2", positive,
+             "per axis; larger readings are rejected (sensor clips at 156.9)");
+    t.number("accel_clip_level", &P::accel_clip_level, 149.0, "m/s^2", positive,
+             "per axis; readings at or beyond count as clipped (0.95 x 156.9)");
+    t.number("clip_velocity_std", &P::clip_velocity_std, 0.3, "m/s", positive,
+             "velocity a clipped sample may have missed (a 0.4 m/s touchdown misses 0.25)");
+    t.number("initial_velocity_std", &P::initial_velocity_std, 1.0, "m/s", positive,
+             "velocity starts at zero (covers a restart mid-flight)");
+    t.number("initial_gyro_bias_std", &P::initial_gyro_bias_std, 0.02, "rad/s", positive, "per axis");
+    t.number("initial_accel_bias_std", &P::initial_accel_bias_std, 0.1, "m/s^2", positive, "per axis");
+    t.number("vio_position_std", &P::vio_position_std, 0.01, "m", positive, "used when a pose reports position_std 0");
+    t.number("vio_attitude_std", &P::vio_attitude_std, 0.008, "rad", positive, "used when a pose reports attitude_std 0");
+    t.number("output_rate", &P::output_rate, 250.0, "Hz", Range::closed(1.0, 1000.0),
+             "propagation and STATE_EST rate on the IMU-time grid");
+    // 150 ms covers the 30-50 ms VIO latency of the simulator with margin for a late bus; 2 s bounds memory.
+    t.number("history_length", &P::history_length, 0.2, "s", Range::closed(0.15, 2.0),
+             "oldest accepted VIO capture time behind the newest state");
+    t.number("vio_timeout", &P::vio_timeout, 0.5, "s", positive, "no pose fused for this long: status VIO_TIMEOUT");
+    t.number("reinit_after", &P::reinit_after, 2.0, "s", positive,
+             "no pose fused for this long: the next pose re-initialises");
+    t.number("gate_chi2", &P::gate_chi2, 28.0, "-", positive, "Mahalanobis^2 gate, 6-dof pose innovation (chi2 p ~ 1e-4)");
+    t.number("vio_reset_after", &P::vio_reset_after, 0.3, "s", positive,
+             "gated poses agreeing with one another this long: reset to the VIO");
+    t.number("quaternion_norm_tolerance", &P::quaternion_norm_tolerance, 0.05, "-", Range::open(0.0, 0.5),
+             "reject a pose whose | ||q|| - 1 | exceeds this");
+    t.number("imu_max_gap", &P::imu_max_gap, 0.1, "s", Range::openClosed(0.0, 1.0),
+             "larger steps between IMU samples are rejected");
+    t.integer("imu_time_reset_count", &P::imu_time_reset_count, 100, "samples", Range::atLeast(1),
+              "timing rejects in a row that mean a new clock: start over");
+    t.number("gravity", &P::gravity, kDefaultGravity, "m/s^2", positive, "gravity of the filter's model");
+    // Above accel_range a reading is rejected, so a higher clip level could never be seen.
+    t.check("accel_clip_level", [](const P& p) { return p.accel_clip_level <= p.accel_range; }, "must be <= accel_range");
+    t.check("output_rate",
+            [](const P& p) {
+              const double period_us = 1e6 / p.output_rate;
+              return std::abs(period_us - std::round(period_us)) <= 1e-6;
+            },
+            "1e6 / output_rate must be a whole number of microseconds (e.g. 250, 200, 500)");
+    t.check("history_length", [](const P& p) { return p.history_length * p.output_rate >= 2.0; },
+            "must span at least two output periods");
+    t.check("reinit_after", [](const P& p) { return p.reinit_after > p.vio_timeout; }, "must be > vio_timeout");
+    // Past reinit_after the next pose re-initialises anyway; a reset must come before that.
+    t.check("vio_reset_after", [](const P& p) { return p.vio_reset_after < p.reinit_after; }, "must be < reinit_after");
+    return t;
+  }();
+  return table;
 }
 
 }  // namespace sdlqr::estimator

@@ -3,26 +3,9 @@
 namespace sdlqr::gains {
 
 GainScheduler::GainScheduler(const LqrParams& params, double rate_hz)
-    : params_(params),
+    : lqr_(params),
       period_utime_(static_cast<int64_t>(1e6 / rate_hz + 0.5)),
       reference_input_(makeInput(Vec3::Zero(), params.gravity)) {}
-
-bool GainScheduler::applyParams(const ParamsUpdate& update) {
-  LqrParams next = params_;
-  if (update.field_mask & ParamsUpdate::kWeights) {
-    next.q_diag = update.q_diag;
-    next.r_diag = update.r_diag;
-  }
-  if (update.field_mask & ParamsUpdate::kLimits) {
-    next.omega_max = update.omega_max;
-    next.c_min = update.c_min;
-    next.c_max = update.c_max;
-  }
-  if (!next.valid()) return false;
-  params_ = next;
-  params_seq_ = update.seq;
-  return true;
-}
 
 bool GainScheduler::due(const StateEstimate& estimate) {
   if (estimate.utime < next_utime_) return false;
@@ -32,21 +15,22 @@ bool GainScheduler::due(const StateEstimate& estimate) {
 
 SolveStatus GainScheduler::solve(const StateEstimate& estimate, GainSet& out) {
   const State x = estimate.state();
-  const LqrResult result = solveLqr(x, reference_input_, params_);
+  const LqrParams& params = lqr_.params();
+  const LqrResult result = solveLqr(x, reference_input_, params);
   ++solves_;
   out.utime = estimate.utime;
   out.x_lin = x;
   orientation(out.x_lin).normalize();
   out.u_lin = reference_input_;
-  out.q_diag = params_.q_diag;
-  out.r_diag = params_.r_diag;
-  out.dt = params_.dt;
+  out.q_diag = params.q_diag;
+  out.r_diag = params.r_diag;
+  out.dt = params.dt;
   out.residual = result.residual;
   out.iterations = result.iterations;
   out.state_seq = estimate.seq;
-  out.params_seq = params_seq_;
+  out.params_seq = lqr_.seq();
   out.reference_seq = reference_seq_;
-  out.method = params_.method == LqrMethod::kTangent ? GainsMethod::kTangent : GainsMethod::kIterative;
+  out.method = params.method == LqrMethod::kTangent ? GainsMethod::kTangent : GainsMethod::kIterative;
   out.status = result.status;
   if (result.status != SolveStatus::kOk) {
     ++failures_;

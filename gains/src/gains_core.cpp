@@ -41,12 +41,13 @@ RejectReason GainsCore::onReference(const Reference& reference) {
 }
 
 RejectReason GainsCore::onParams(const ParamsUpdate& update) {
-  const RejectReason reason = admitOrdered(update, limits_, params_order_, state_clock_.now());
-  if (health_.reject(Stream::kParams, reason)) return reason;
-  if (scheduler_.applyParams(update)) return RejectReason::kNone;
-  health_.reject(Stream::kParams, RejectReason::kRefused);
-  health_.setLastError("PARAMS seq " + std::to_string(update.seq) + " refused: the weights or limits are invalid");
-  return RejectReason::kRefused;
+  RejectReason reason = admitOrdered(update, limits_, params_order_, state_clock_.now());
+  if (reason == RejectReason::kNone) reason = rejectionOf(scheduler_.applyParams(update));
+  if (reason == RejectReason::kRefused) {
+    health_.setLastError("PARAMS seq " + std::to_string(update.seq) + " refused: the weights or limits are invalid");
+  }
+  health_.reject(Stream::kParams, reason);
+  return reason;
 }
 
 void GainsCore::onWallTime(double now_s) {

@@ -2,23 +2,18 @@
 
 namespace sdlqr::gains {
 
-GainsParams GainsParams::load(const ConfigReader& gains) {
-  gains.allowOnly({"rate_hz", "state_timeout_s"});
-  GainsParams p;
-  gains.read("rate_hz", p.rate_hz);
-  gains.read("state_timeout_s", p.state_timeout_s);
-  const std::string reason = p.invalidReason();
-  if (!reason.empty()) {
-    const auto colon = reason.find(':');
-    throw ConfigError(gains.keyPath(reason.substr(0, colon)), reason.substr(colon + 2));
-  }
-  return p;
-}
+GainsParams::GainsParams() { declaration().setDefaults(*this); }
 
-std::string GainsParams::invalidReason() const {
-  if (!(rate_hz >= 0.1 && rate_hz <= 1000.0)) return "rate_hz: must be in [0.1, 1000] Hz";
-  if (!(state_timeout_s > 0.0)) return "state_timeout_s: must be > 0";
-  return {};
+const ParamTable<GainsParams>& GainsParams::declaration() {
+  static const ParamTable<GainsParams> table = [] {
+    using P = GainsParams;
+    ParamTable<P> t("gain solver (sdlqr-gains); weights, limits and method come from lqr");
+    t.number("rate_hz", &P::rate_hz, 10.0, "Hz", Range::closed(0.1, 1000.0), "solve rate in simulation time (paper: 10 Hz)");
+    t.number("state_timeout_s", &P::state_timeout_s, 0.5, "s", Range::above(0.0),
+             "no STATE_EST for this long (wall time): report DEGRADED");
+    return t;
+  }();
+  return table;
 }
 
 }  // namespace sdlqr::gains

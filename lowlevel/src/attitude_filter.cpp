@@ -7,29 +7,26 @@
 
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/lowlevel/low_pass.hpp"
-#include "sdlqr/lowlevel/param_check.hpp"
 
 namespace sdlqr::lowlevel {
 
-AttitudeFilterParams AttitudeFilterParams::load(const ConfigReader& reader) {
-  reader.allowOnly({"flight_gain", "ground_gain", "accel_gate", "bias_time_constant", "velocity_leak_time"});
-  AttitudeFilterParams params;
-  reader.read("flight_gain", params.flight_gain);
-  reader.read("ground_gain", params.ground_gain);
-  reader.read("accel_gate", params.accel_gate);
-  reader.read("bias_time_constant", params.bias_time_constant);
-  reader.read("velocity_leak_time", params.velocity_leak_time);
-  throwIfInvalid(reader, params.invalidReason());
-  return params;
-}
+AttitudeFilterParams::AttitudeFilterParams() { declaration().setDefaults(*this); }
 
-std::string AttitudeFilterParams::invalidReason() const {
-  if (!(flight_gain >= 0.0 && flight_gain <= 50.0)) return "flight_gain: must be in [0, 50] 1/s";
-  if (!(ground_gain >= 0.0 && ground_gain <= 50.0)) return "ground_gain: must be in [0, 50] 1/s";
-  if (!(accel_gate > 0.0 && accel_gate < 1.0)) return "accel_gate: must be in (0, 1)";
-  if (!(bias_time_constant > 0.0 && std::isfinite(bias_time_constant))) return "bias_time_constant: must be > 0";
-  if (!(velocity_leak_time >= 0.0 && std::isfinite(velocity_leak_time))) return "velocity_leak_time: must be >= 0 (0: no leak)";
-  return {};
+const ParamTable<AttitudeFilterParams>& AttitudeFilterParams::declaration() {
+  static const ParamTable<AttitudeFilterParams> table = [] {
+    using P = AttitudeFilterParams;
+    ParamTable<P> t("IMU-only attitude and vertical velocity the failsafe flies on");
+    t.number("flight_gain", &P::flight_gain, 0.2, "1/s", Range::closed(0.0, 50.0), "accelerometer levelling rate in flight");
+    t.number("ground_gain", &P::ground_gain, 2.0, "1/s", Range::closed(0.0, 50.0),
+             "accelerometer levelling rate at rest on the ground");
+    t.number("accel_gate", &P::accel_gate, 0.15, "-", Range::open(0.0, 1.0), "level only while | |f| - g | < gate * g");
+    t.number("bias_time_constant", &P::bias_time_constant, 0.5, "s", Range::above(0.0),
+             "gyro bias / vertical offset learning at rest");
+    t.number("velocity_leak_time", &P::velocity_leak_time, 3.0, "s", Range::atLeast(0.0),
+             "vertical velocity leak in normal flight (0: none)");
+    return t;
+  }();
+  return table;
 }
 
 namespace {

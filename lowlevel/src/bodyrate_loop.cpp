@@ -18,11 +18,15 @@ namespace {
 // (a new simulation), not a glitch: take its time as the new reference.
 constexpr int kClockResyncSamples = 100;
 
-double requireValid(const VehicleParams& vehicle, const LowlevelParams& params, double gravity) {
+double requireValid(const VehicleParams& vehicle, const LowlevelParams& params, const ValidationLimits& limits,
+                    double gravity) {
   std::string reason = vehicle.invalidReason();
   if (!reason.empty()) throw std::invalid_argument("vehicle." + reason);
+  reason = limits.invalidReason();
+  if (!reason.empty()) throw std::invalid_argument("validation." + reason);
   reason = params.invalidReason();
   if (reason.empty()) reason = params.invalidReasonFor(vehicle, gravity);
+  if (reason.empty()) reason = params.invalidReasonFor(limits);
   if (!reason.empty()) throw std::invalid_argument("lowlevel." + reason);
   if (!(gravity > 0.0 && std::isfinite(gravity))) throw std::invalid_argument("gravity: must be > 0");
   return gravity;
@@ -30,10 +34,12 @@ double requireValid(const VehicleParams& vehicle, const LowlevelParams& params, 
 
 }  // namespace
 
-BodyrateLoop::BodyrateLoop(const VehicleParams& vehicle, const LowlevelParams& params, double gravity)
+BodyrateLoop::BodyrateLoop(const VehicleParams& vehicle, const LowlevelParams& params, const ValidationLimits& limits,
+                           double gravity)
     : vehicle_(vehicle),
       params_(params),
-      gravity_(requireValid(vehicle, params, gravity)),
+      gravity_(requireValid(vehicle, params, limits, gravity)),
+      max_body_rate_(limits.max_body_rate),
       mass_(vehicle.mass),
       inertia_(vehicle.inertia()),
       rate_controller_(params.rate_control),
@@ -47,8 +53,8 @@ BodyrateLoop::BodyrateLoop(const VehicleParams& vehicle, const LowlevelParams& p
 }
 
 RejectReason BodyrateLoop::setRateCommand(const RateCommand& command) {
-  const RejectReason reason = checkRateCommand(command, params_.input_limits, maxCommandThrust(), last_imu_utime_,
-                                                    command_utime_, params_.rate_cmd_timeout);
+  const RejectReason reason = checkRateCommand(command, params_.input_limits, max_body_rate_, maxCommandThrust(),
+                                               last_imu_utime_, command_utime_, params_.rate_cmd_timeout);
   if (reason != RejectReason::kNone) {
     ++counters_.rate_cmd_rejected[static_cast<size_t>(reason)];
     return reason;
@@ -86,7 +92,7 @@ bool BodyrateLoop::handleCommand(const Command& command) {
 }
 
 bool BodyrateLoop::setMass(double mass) {
-  if (!(std::isfinite(mass) && mass > 0.0 && mass * gravity_ < 4.0 * vehicle_.max_rotor_thrust)) {
+  if (!vehicle_.massInvalidReason(mass, gravity_).empty()) {
     ++counters_.mass_rejected;
     return false;
   }

@@ -6,44 +6,38 @@
 #include <Eigen/Geometry>
 
 #include "sdlqr/math/quaternion.hpp"
-#include "sdlqr/lowlevel/param_check.hpp"
 
 namespace sdlqr::lowlevel {
 
-FailsafeParams FailsafeParams::load(const ConfigReader& reader) {
-  reader.allowOnly({"descent_rate", "velocity_gain", "velocity_integral_gain", "attitude_gain", "max_rate", "thrust_min_ratio", "thrust_max_ratio",
-                    "velocity_leak_time", "touchdown_time", "impact_rest_time"});
-  FailsafeParams params;
-  reader.read("descent_rate", params.descent_rate);
-  reader.read("velocity_gain", params.velocity_gain);
-  reader.read("velocity_integral_gain", params.velocity_integral_gain);
-  reader.read("attitude_gain", params.attitude_gain);
-  reader.read("max_rate", params.max_rate);
-  reader.read("thrust_min_ratio", params.thrust_min_ratio);
-  reader.read("thrust_max_ratio", params.thrust_max_ratio);
-  reader.read("velocity_leak_time", params.velocity_leak_time);
-  reader.read("touchdown_time", params.touchdown_time);
-  reader.read("impact_rest_time", params.impact_rest_time);
-  throwIfInvalid(reader, params.invalidReason());
-  return params;
-}
+FailsafeParams::FailsafeParams() { declaration().setDefaults(*this); }
 
-std::string FailsafeParams::invalidReason() const {
-  if (!(descent_rate > 0.0 && descent_rate <= 3.0)) return "descent_rate: must be in (0, 3] m/s";
-  if (!(velocity_gain > 0.0 && velocity_gain <= 50.0)) return "velocity_gain: must be in (0, 50] 1/s";
-  if (!(velocity_integral_gain >= 0.0 && velocity_integral_gain <= 50.0)) {
-    return "velocity_integral_gain: must be in [0, 50] 1/s^2";
-  }
-  if (!(attitude_gain > 0.0 && attitude_gain <= 50.0)) return "attitude_gain: must be in (0, 50] 1/s";
-  if (!(max_rate > 0.0 && max_rate <= 20.0)) return "max_rate: must be in (0, 20] rad/s";
-  if (!(thrust_min_ratio >= 0.0 && thrust_min_ratio < 1.0)) return "thrust_min_ratio: must be in [0, 1)";
-  if (!(thrust_max_ratio > 1.0 && thrust_max_ratio <= 4.0)) return "thrust_max_ratio: must be in (1, 4]";
-  if (!(velocity_leak_time >= 0.0 && std::isfinite(velocity_leak_time))) return "velocity_leak_time: must be >= 0 (0: no leak)";
-  if (!(touchdown_time > 0.0 && touchdown_time <= 10.0)) return "touchdown_time: must be in (0, 10] s";
-  if (!(impact_rest_time > 0.0 && impact_rest_time <= touchdown_time)) {
-    return "impact_rest_time: must be in (0, touchdown_time] s";
-  }
-  return {};
+const ParamTable<FailsafeParams>& FailsafeParams::declaration() {
+  static const ParamTable<FailsafeParams> table = [] {
+    using P = FailsafeParams;
+    ParamTable<P> t("what the bodyrate loop flies when RATE_CMD goes silent");
+    t.number("descent_rate", &P::descent_rate, 0.5, "m/s", Range::openClosed(0.0, 3.0), "sink rate");
+    t.number("velocity_gain", &P::velocity_gain, 2.0, "1/s", Range::openClosed(0.0, 50.0),
+             "thrust (m/s^2) per m/s of vertical velocity error");
+    // The integral absorbs a wrong hover thrust (battery sag, a learned value still high after a
+    // climb), which a proportional term alone would turn into a hover instead of a descent.
+    t.number("velocity_integral_gain", &P::velocity_integral_gain, 1.0, "1/s^2", Range::closed(0.0, 50.0),
+             "thrust (m/s^2) per m of integrated error");
+    t.number("attitude_gain", &P::attitude_gain, 5.0, "1/s", Range::openClosed(0.0, 50.0),
+             "levelling body rate per radian of tilt");
+    t.number("max_rate", &P::max_rate, 3.0, "rad/s", Range::above(0.0),
+             "bound on the levelling rate (at most validation.max_body_rate)");
+    t.number("thrust_min_ratio", &P::thrust_min_ratio, 0.6, "-", Range::closedOpen(0.0, 1.0),
+             "thrust bounds as multiples of hover thrust");
+    t.number("thrust_max_ratio", &P::thrust_max_ratio, 1.5, "-", Range::openClosed(1.0, 4.0), "upper thrust bound");
+    t.number("velocity_leak_time", &P::velocity_leak_time, 20.0, "s", Range::atLeast(0.0),
+             "vertical velocity leak while descending (0: none)");
+    t.number("touchdown_time", &P::touchdown_time, 0.3, "s", Range::openClosed(0.0, 10.0), "at rest without descending -> disarm");
+    t.number("impact_rest_time", &P::impact_rest_time, 0.1, "s", Range::above(0.0), "the same after an impact spike");
+    t.check("impact_rest_time", [](const P& p) { return p.impact_rest_time <= p.touchdown_time; },
+            "must be <= touchdown_time");
+    return t;
+  }();
+  return table;
 }
 
 Vec3 levellingRate(const Quat& attitude, double gain, double max_rate) {

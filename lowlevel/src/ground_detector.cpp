@@ -3,32 +3,26 @@
 #include <cmath>
 
 #include "sdlqr/lowlevel/low_pass.hpp"
-#include "sdlqr/lowlevel/param_check.hpp"
 
 namespace sdlqr::lowlevel {
 
-GroundDetectorParams GroundDetectorParams::load(const ConfigReader& reader) {
-  reader.allowOnly({"filter_cutoff_hz", "accel_tolerance", "gyro_tolerance", "impact_threshold", "landed_thrust_ratio",
-                    "landed_time"});
-  GroundDetectorParams params;
-  reader.read("filter_cutoff_hz", params.filter_cutoff_hz);
-  reader.read("accel_tolerance", params.accel_tolerance);
-  reader.read("gyro_tolerance", params.gyro_tolerance);
-  reader.read("impact_threshold", params.impact_threshold);
-  reader.read("landed_thrust_ratio", params.landed_thrust_ratio);
-  reader.read("landed_time", params.landed_time);
-  throwIfInvalid(reader, params.invalidReason());
-  return params;
-}
+GroundDetectorParams::GroundDetectorParams() { declaration().setDefaults(*this); }
 
-std::string GroundDetectorParams::invalidReason() const {
-  if (!(filter_cutoff_hz > 0.0 && filter_cutoff_hz <= 100.0)) return "filter_cutoff_hz: must be in (0, 100] Hz";
-  if (!(accel_tolerance > 0.0 && accel_tolerance < 5.0)) return "accel_tolerance: must be in (0, 5) m/s^2";
-  if (!(gyro_tolerance > 0.0 && gyro_tolerance < 5.0)) return "gyro_tolerance: must be in (0, 5) rad/s";
-  if (!(impact_threshold > 0.0 && std::isfinite(impact_threshold))) return "impact_threshold: must be > 0";
-  if (!(landed_thrust_ratio > 0.0 && landed_thrust_ratio < 1.0)) return "landed_thrust_ratio: must be in (0, 1)";
-  if (!(landed_time > 0.0 && std::isfinite(landed_time))) return "landed_time: must be > 0";
-  return {};
+const ParamTable<GroundDetectorParams>& GroundDetectorParams::declaration() {
+  static const ParamTable<GroundDetectorParams> table = [] {
+    using P = GroundDetectorParams;
+    ParamTable<P> t("ground contact seen through the IMU alone");
+    t.number("filter_cutoff_hz", &P::filter_cutoff_hz, 5.0, "Hz", Range::openClosed(0.0, 100.0), "low-pass on |f| and |omega|");
+    t.number("accel_tolerance", &P::accel_tolerance, 0.5, "m/s^2", Range::open(0.0, 5.0), "at rest: | |f| - g | below this");
+    t.number("gyro_tolerance", &P::gyro_tolerance, 0.2, "rad/s", Range::open(0.0, 5.0), "at rest: |omega| below this");
+    t.number("impact_threshold", &P::impact_threshold, 5.0, "m/s^2", Range::above(0.0),
+             "body-z specific force above the rotors' share");
+    t.number("landed_thrust_ratio", &P::landed_thrust_ratio, 0.8, "-", Range::open(0.0, 1.0),
+             "thrust command below ratio * hover counts as landing");
+    t.number("landed_time", &P::landed_time, 1.0, "s", Range::above(0.0), "at rest with thrust below hover -> auto-disarm");
+    return t;
+  }();
+  return table;
 }
 
 GroundDetector::GroundDetector(const GroundDetectorParams& params, double gravity)

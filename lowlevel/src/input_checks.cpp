@@ -2,29 +2,26 @@
 
 #include <cmath>
 
-#include "sdlqr/lowlevel/param_check.hpp"
 
 namespace sdlqr::lowlevel {
 
-InputLimits InputLimits::load(const ConfigReader& reader) {
-  reader.allowOnly({"max_body_rate", "max_command_lead", "max_gyro", "max_accel", "max_imu_gap"});
-  InputLimits limits;
-  reader.read("max_body_rate", limits.max_body_rate);
-  reader.read("max_command_lead", limits.max_command_lead);
-  reader.read("max_gyro", limits.max_gyro);
-  reader.read("max_accel", limits.max_accel);
-  reader.read("max_imu_gap", limits.max_imu_gap);
-  throwIfInvalid(reader, limits.invalidReason());
-  return limits;
-}
+InputLimits::InputLimits() { declaration().setDefaults(*this); }
 
-std::string InputLimits::invalidReason() const {
-  if (!(max_body_rate > 0.0 && max_body_rate <= 100.0)) return "max_body_rate: must be in (0, 100] rad/s";
-  if (!(max_command_lead >= 0.0 && max_command_lead <= 10.0)) return "max_command_lead: must be in [0, 10] s";
-  if (!(max_gyro > 0.0 && max_gyro <= 1000.0)) return "max_gyro: must be in (0, 1000] rad/s";
-  if (!(max_accel > 10.0 && max_accel <= 10000.0)) return "max_accel: must be in (10, 10000] m/s^2";
-  if (!(max_imu_gap > 0.0 && max_imu_gap <= 60.0)) return "max_imu_gap: must be in (0, 60] s";
-  return {};
+const ParamTable<InputLimits>& InputLimits::declaration() {
+  static const ParamTable<InputLimits> table = [] {
+    using P = InputLimits;
+    ParamTable<P> t("checks of what arrives from the bus (RATE_CMD |omega|: validation.max_body_rate)");
+    t.number("max_command_lead", &P::max_command_lead, 0.1, "s", Range::closed(0.0, 10.0),
+             "RATE_CMD utime allowed ahead of IMU time");
+    t.number("max_gyro", &P::max_gyro, 35.0, "rad/s", Range::openClosed(0.0, 1000.0),
+             "IMU range per axis: beyond a 2000 deg/s gyro's range");
+    t.number("max_accel", &P::max_accel, 160.0, "m/s^2", Range::openClosed(10.0, 10000.0),
+             "IMU range per axis: beyond a 16 g accelerometer's range");
+    t.number("max_imu_gap", &P::max_imu_gap, 1.0, "s", Range::openClosed(0.0, 60.0),
+             "larger forward jumps of IMU time are rejected");
+    return t;
+  }();
+  return table;
 }
 
 RejectReason checkImu(const ImuSample& sample, const InputLimits& limits, int64_t last_utime) {
@@ -41,10 +38,10 @@ RejectReason checkImu(const ImuSample& sample, const InputLimits& limits, int64_
   return RejectReason::kNone;
 }
 
-RejectReason checkRateCommand(const RateCommand& command, const InputLimits& limits, double max_thrust,
-                                   int64_t imu_utime, int64_t last_utime, double max_age) {
+RejectReason checkRateCommand(const RateCommand& command, const InputLimits& limits, double max_body_rate,
+                              double max_thrust, int64_t imu_utime, int64_t last_utime, double max_age) {
   if (!command.body_rate.allFinite() || !std::isfinite(command.thrust)) return RejectReason::kNonFinite;
-  if (command.body_rate.cwiseAbs().maxCoeff() > limits.max_body_rate) return RejectReason::kOutOfRange;
+  if (command.body_rate.norm() > max_body_rate) return RejectReason::kOutOfRange;
   if (!(command.thrust >= 0.0 && command.thrust <= max_thrust)) return RejectReason::kOutOfRange;
   // Equal times are fine: two commands may come from the same state estimate.
   if (last_utime != kNoTime && command.utime < last_utime) return RejectReason::kTimeBackwards;

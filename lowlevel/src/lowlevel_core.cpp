@@ -6,7 +6,7 @@ namespace sdlqr::lowlevel {
 
 LowlevelCore::LowlevelCore(const VehicleParams& vehicle, const LowlevelParams& params, double gravity,
                            const FaultParams& faults, const ValidationLimits& limits)
-    : loop_(vehicle, params, gravity),
+    : loop_(vehicle, params, limits, gravity),
       faults_(faults),
       limits_(limits),
       imu_watchdog_(health_.counters(), "imu", faults.lowlevel_imu_timeout_s),

@@ -7,7 +7,6 @@
 
 #include <Eigen/QR>
 
-#include "sdlqr/lowlevel/param_check.hpp"
 
 namespace sdlqr::lowlevel {
 
@@ -22,17 +21,18 @@ double clampToInterval(double value, double low, double high) {
 }
 }  // namespace
 
-MixerParams MixerParams::load(const ConfigReader& reader) {
-  reader.allowOnly({"yaw_collective_share"});
-  MixerParams params;
-  reader.read("yaw_collective_share", params.yaw_collective_share);
-  throwIfInvalid(reader, params.invalidReason());
-  return params;
-}
+MixerParams::MixerParams() { declaration().setDefaults(*this); }
 
-std::string MixerParams::invalidReason() const {
-  if (!(yaw_collective_share >= 0.0 && yaw_collective_share <= 1.0)) return "yaw_collective_share: must be in [0, 1]";
-  return {};
+const ParamTable<MixerParams>& MixerParams::declaration() {
+  static const ParamTable<MixerParams> table = [] {
+    using P = MixerParams;
+    ParamTable<P> t("control allocation with sequential desaturation");
+    // Yaw matters less than altitude, but at zero share a vehicle at full thrust could not turn.
+    t.number("yaw_collective_share", &P::yaw_collective_share, 0.15, "-", Range::closed(0.0, 1.0),
+             "collective thrust yaw may take (or add), as a fraction of the demanded collective");
+    return t;
+  }();
+  return table;
 }
 
 Mixer::Mixer(const Mat44& effectiveness, double min_thrust, double max_thrust, const MixerParams& params)

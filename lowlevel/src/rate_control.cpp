@@ -2,43 +2,31 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 #include "sdlqr/lowlevel/low_pass.hpp"
-#include "sdlqr/lowlevel/param_check.hpp"
 
 namespace sdlqr::lowlevel {
 
-RateControlParams RateControlParams::load(const ConfigReader& reader) {
-  reader.allowOnly({"p", "i", "d", "integral_limit", "d_cutoff_hz", "gyroscopic_feedforward"});
-  RateControlParams params;
-  reader.read("p", params.p);
-  reader.read("i", params.i);
-  reader.read("d", params.d);
-  reader.read("integral_limit", params.integral_limit);
-  reader.read("d_cutoff_hz", params.d_cutoff_hz);
-  reader.read("gyroscopic_feedforward", params.gyroscopic_feedforward);
-  throwIfInvalid(reader, params.invalidReason());
-  return params;
-}
+RateControlParams::RateControlParams() { declaration().setDefaults(*this); }
 
-std::string RateControlParams::invalidReason() const {
-  auto axisReason = [](const char* key, int axis, const char* rule) {
-    std::ostringstream why;
-    why << key << "[" << axis << "]: " << rule;
-    return why.str();
-  };
-  for (int axis = 0; axis < 3; ++axis) {
-    if (!(std::isfinite(p[axis]) && p[axis] > 0.0)) return axisReason("p", axis, "must be finite and > 0");
-    if (!(std::isfinite(i[axis]) && i[axis] >= 0.0)) return axisReason("i", axis, "must be finite and >= 0");
-    if (!(std::isfinite(d[axis]) && d[axis] >= 0.0)) return axisReason("d", axis, "must be finite and >= 0");
-    if (!(std::isfinite(integral_limit[axis]) && integral_limit[axis] >= 0.0)) {
-      return axisReason("integral_limit", axis, "must be finite and >= 0");
-    }
-  }
-  // Above a few hundred hertz the filter would pass the 1 kHz sampling noise untouched.
-  if (!(d_cutoff_hz > 0.0 && d_cutoff_hz <= 400.0)) return "d_cutoff_hz: must be in (0, 400] Hz";
-  return {};
+const ParamTable<RateControlParams>& RateControlParams::declaration() {
+  static const ParamTable<RateControlParams> table = [] {
+    using P = RateControlParams;
+    ParamTable<P> t("body-rate PID per axis (roll, pitch, yaw)");
+    // Tuned on a rigid body with the default inertia and a 30 ms motor lag: a 1 rad/s roll or
+    // pitch step settles to 2 % in about 65 ms with < 1 % overshoot (tests/unit/lowlevel).
+    // Yaw is slower on purpose: rotor drag gives it a tenth of the roll authority.
+    t.list("p", &P::p, {120.0, 120.0, 12.0}, "1/s", Range::above(0.0), "rad/s^2 per rad/s of rate error (roll, pitch, yaw)");
+    t.list("i", &P::i, {30.0, 30.0, 1.0}, "1/s^2", Range::atLeast(0.0), "rad/s^2 per rad of integrated rate error");
+    t.list("d", &P::d, {2.0, 2.0, 0.0}, "-", Range::atLeast(0.0), "rad/s^2 per rad/s^2 of measured rate change");
+    t.list("integral_limit", &P::integral_limit, {30.0, 30.0, 10.0}, "rad/s^2", Range::atLeast(0.0),
+           "bound of the integral term");
+    // Above a few hundred hertz the filter would pass the 1 kHz sampling noise untouched.
+    t.number("d_cutoff_hz", &P::d_cutoff_hz, 40.0, "Hz", Range::openClosed(0.0, 400.0), "low-pass on the gyro derivative");
+    t.flag("gyroscopic_feedforward", &P::gyroscopic_feedforward, true, "add omega x J omega to the torque");
+    return t;
+  }();
+  return table;
 }
 
 RateController::RateController(const RateControlParams& params) : params_(params) {}

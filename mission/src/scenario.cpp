@@ -4,6 +4,8 @@
 #include <cctype>
 #include <cmath>
 
+#include "sdlqr/math/vehicle.hpp"
+
 namespace sdlqr::mission {
 
 namespace {
@@ -95,7 +97,8 @@ ParamsUpdate parseParams(const ConfigReader& p) {
   if (p.has("mass")) {
     out.field_mask |= ParamsUpdate::kMass;
     p.read("mass", out.mass);
-    if (!(out.mass > 0.0)) throw ConfigError(p.keyPath("mass"), "must be > 0");
+    // The range of vehicle.mass; whether the rotors lift it is the bodyrate loop's check.
+    if (!kMassRange.contains(out.mass)) throw ConfigError(p.keyPath("mass"), kMassRange.rule("kg"));
   }
   if (p.has("tracking")) {
     std::string tracking;

@@ -4,160 +4,137 @@
 
 namespace sdlqr::sim {
 
-namespace {
+ImuParams::ImuParams() { declaration().setDefaults(*this); }
+VioParams::VioParams() { declaration().setDefaults(*this); }
+BatteryParams::BatteryParams() { declaration().setDefaults(*this); }
+GroundParams::GroundParams() { declaration().setDefaults(*this); }
+DisturbanceLimits::DisturbanceLimits() { declaration().setDefaults(*this); }
+SimParams::SimParams() { declaration().setDefaults(*this); }
 
-bool finiteAtLeast(double value, double low) { return std::isfinite(value) && value >= low; }
-bool finiteAbove(double value, double low) { return std::isfinite(value) && value > low; }
-
-std::string imuInvalidReason(const ImuParams& imu, int physics_rate_hz) {
-  if (imu.rate_hz <= 0 || physics_rate_hz % imu.rate_hz != 0) return "imu.rate_hz: must divide physics_rate_hz";
-  if (!finiteAtLeast(imu.gyro_noise_density, 0.0)) return "imu.gyro_noise_density: must be >= 0";
-  if (!finiteAtLeast(imu.accel_noise_density, 0.0)) return "imu.accel_noise_density: must be >= 0";
-  if (!finiteAtLeast(imu.gyro_bias_random_walk, 0.0)) return "imu.gyro_bias_random_walk: must be >= 0";
-  if (!finiteAtLeast(imu.accel_bias_random_walk, 0.0)) return "imu.accel_bias_random_walk: must be >= 0";
-  if (!finiteAtLeast(imu.gyro_bias_initial_max, 0.0)) return "imu.gyro_bias_initial_max: must be >= 0";
-  if (!finiteAtLeast(imu.accel_bias_initial_max, 0.0)) return "imu.accel_bias_initial_max: must be >= 0";
-  if (!finiteAbove(imu.gyro_range, 0.0)) return "imu.gyro_range: must be > 0";
-  // Below 2 g a hovering, manoeuvring vehicle would clip all the time.
-  if (!(std::isfinite(imu.accel_range) && imu.accel_range >= 20.0)) return "imu.accel_range: must be >= 20 m/s^2";
-  return {};
+const ParamTable<ImuParams>& ImuParams::declaration() {
+  static const ParamTable<ImuParams> table = [] {
+    using P = ImuParams;
+    ParamTable<P> t("MEMS IMU: noise and ranges as agreed with the estimator");
+    t.integer("rate_hz", &P::rate_hz, 1000, "Hz", Range::closed(1, 100000), "IMU rate, divides physics_rate_hz");
+    t.number("gyro_noise_density", &P::gyro_noise_density, 5e-4, "rad/s/sqrt(Hz)", Range::atLeast(0.0),
+             "white noise (0.016 rad/s per sample at 1 kHz)");
+    t.number("accel_noise_density", &P::accel_noise_density, 4e-3, "m/s^2/sqrt(Hz)", Range::atLeast(0.0),
+             "white noise (0.13 m/s^2 per sample at 1 kHz)");
+    t.number("gyro_bias_random_walk", &P::gyro_bias_random_walk, 2e-5, "rad/s^2/sqrt(Hz)", Range::atLeast(0.0),
+             "gyro bias drift");
+    t.number("accel_bias_random_walk", &P::accel_bias_random_walk, 2e-4, "m/s^3/sqrt(Hz)", Range::atLeast(0.0),
+             "accelerometer bias drift");
+    t.number("gyro_bias_initial_max", &P::gyro_bias_initial_max, 0.02, "rad/s", Range::atLeast(0.0),
+             "initial bias uniform in +-max per axis");
+    t.number("accel_bias_initial_max", &P::accel_bias_initial_max, 0.1, "m/s^2", Range::atLeast(0.0),
+             "initial bias uniform in +-max per axis");
+    t.number("gyro_range", &P::gyro_range, 34.9, "rad/s", Range::above(0.0), "readings clip here per axis (2000 deg/s)");
+    // Below 2 g a hovering, manoeuvring vehicle would clip all the time.
+    t.number("accel_range", &P::accel_range, 156.9, "m/s^2", Range::atLeast(20.0),
+             "readings clip here per axis (16 g): touchdowns do");
+    return t;
+  }();
+  return table;
 }
 
-std::string vioInvalidReason(const VioParams& vio, int physics_rate_hz) {
-  if (vio.rate_hz <= 0 || vio.rate_hz > physics_rate_hz) return "vio.rate_hz: must be in [1, physics_rate_hz]";
-  if (!finiteAtLeast(vio.latency_min_s, 0.0)) return "vio.latency_min_s: must be >= 0";
-  if (!(std::isfinite(vio.latency_max_s) && vio.latency_max_s >= vio.latency_min_s)) {
-    return "vio.latency_max_s: must be >= latency_min_s";
-  }
-  // A real VIO publishes in capture order; a latency spread below one period keeps that true.
-  if (vio.latency_max_s - vio.latency_min_s >= 1.0 / vio.rate_hz) {
-    return "vio.latency_max_s: latency spread must stay below one VIO period";
-  }
-  if (vio.latency_max_s * vio.rate_hz + 2.0 > kVioDelayLineCapacity) {
-    return "vio.latency_max_s: too many poses in flight for the delay line (rate x latency)";
-  }
-  if (!finiteAtLeast(vio.position_std, 0.0)) return "vio.position_std: must be >= 0";
-  if (!finiteAtLeast(vio.attitude_std, 0.0)) return "vio.attitude_std: must be >= 0";
-  return {};
+const ParamTable<VioParams>& VioParams::declaration() {
+  static const ParamTable<VioParams> table = [] {
+    using P = VioParams;
+    ParamTable<P> t("visual-inertial odometry poses: rate, delay, noise");
+    t.integer("rate_hz", &P::rate_hz, 30, "Hz", Range::atLeast(1), "capture rate, at most physics_rate_hz");
+    t.number("latency_min_s", &P::latency_min_s, 0.030, "s", Range::atLeast(0.0),
+             "capture-to-publish delay, uniform in [min, max]");
+    t.number("latency_max_s", &P::latency_max_s, 0.050, "s", Range::atLeast(0.0), "longest capture-to-publish delay");
+    t.number("position_std", &P::position_std, 0.01, "m", Range::atLeast(0.0), "per axis");
+    t.number("attitude_std", &P::attitude_std, 0.008, "rad", Range::atLeast(0.0), "per axis (rotation vector, body frame)");
+    t.check("latency_max_s", [](const P& v) { return v.latency_max_s >= v.latency_min_s; }, "must be >= latency_min_s");
+    // A real VIO publishes in capture order; a latency spread below one period keeps that true.
+    t.check("latency_max_s", [](const P& v) { return v.latency_max_s - v.latency_min_s < 1.0 / v.rate_hz; },
+            "latency spread must stay below one VIO period");
+    t.check("latency_max_s", [](const P& v) { return v.latency_max_s * v.rate_hz + 2.0 <= kVioDelayLineCapacity; },
+            "too many poses in flight for the delay line (rate x latency)");
+    return t;
+  }();
+  return table;
 }
 
-std::string batteryInvalidReason(const BatteryParams& b) {
-  if (b.cell_count < 1 || b.cell_count > 14) return "battery.cell_count: must be in [1, 14]";
-  if (!finiteAbove(b.capacity_mah, 0.0)) return "battery.capacity_mah: must be > 0";
-  if (!finiteAtLeast(b.internal_resistance, 0.0) || b.internal_resistance > 10.0) {
-    return "battery.internal_resistance: must be in [0, 10] ohm";
-  }
-  if (!(finiteAbove(b.initial_charge, 0.0) && b.initial_charge <= 1.0)) return "battery.initial_charge: must be in (0, 1]";
-  if (!(finiteAbove(b.calibration_charge, 0.0) && b.calibration_charge <= 1.0)) {
-    return "battery.calibration_charge: must be in (0, 1]";
-  }
-  if (!finiteAtLeast(b.idle_power, 0.0)) return "battery.idle_power: must be >= 0";
-  if (!finiteAtLeast(b.rotor_power_coefficient, 0.0)) return "battery.rotor_power_coefficient: must be >= 0";
-  if (!(finiteAtLeast(b.thrust_voltage_exponent, 0.0) && b.thrust_voltage_exponent <= 4.0)) {
-    return "battery.thrust_voltage_exponent: must be in [0, 4]";
-  }
-  return {};
+const ParamTable<BatteryParams>& BatteryParams::declaration() {
+  static const ParamTable<BatteryParams> table = [] {
+    using P = BatteryParams;
+    ParamTable<P> t("LiPo pack: thrust follows its terminal voltage");
+    t.flag("enabled", &P::enabled, true, "false: ideal supply, thrust exactly as commanded");
+    t.integer("cell_count", &P::cell_count, 3, "-", Range::closed(1, 14), "LiPo cells in series");
+    t.number("capacity_mah", &P::capacity_mah, 300.0, "mAh", Range::above(0.0), "charge of a full pack");
+    t.number("internal_resistance", &P::internal_resistance, 0.09, "ohm", Range::closed(0.0, 10.0), "whole pack");
+    t.number("initial_charge", &P::initial_charge, 0.75, "-", Range::openClosed(0.0, 1.0), "state of charge at start");
+    t.number("calibration_charge", &P::calibration_charge, 0.70, "-", Range::openClosed(0.0, 1.0),
+             "thrust is exact in hover at this charge (paper §IV-B)");
+    t.number("idle_power", &P::idle_power, 2.0, "W", Range::atLeast(0.0), "electronics");
+    t.number("rotor_power_coefficient", &P::rotor_power_coefficient, 16.0, "W/N^1.5", Range::atLeast(0.0),
+             "electrical power per rotor = k T^1.5");
+    t.number("thrust_voltage_exponent", &P::thrust_voltage_exponent, 2.0, "-", Range::closed(0.0, 4.0),
+             "thrust ~ voltage^n at a fixed command");
+    return t;
+  }();
+  return table;
 }
 
-std::string disturbanceInvalidReason(const DisturbanceLimits& d) {
-  if (!finiteAbove(d.max_force, 0.0)) return "disturbance.max_force: must be > 0";
-  if (!finiteAbove(d.max_torque, 0.0)) return "disturbance.max_torque: must be > 0";
-  if (!finiteAbove(d.max_duration, 0.0) || d.max_duration > 86400.0) return "disturbance.max_duration: must be in (0, 86400] s";
-  if (!finiteAtLeast(d.max_stiffness, 0.0)) return "disturbance.max_stiffness: must be >= 0";
-  if (!finiteAtLeast(d.max_damping, 0.0)) return "disturbance.max_damping: must be >= 0";
-  return {};
+const ParamTable<GroundParams>& GroundParams::declaration() {
+  static const ParamTable<GroundParams> table = [] {
+    using P = GroundParams;
+    ParamTable<P> t("the ground plane z = 0");
+    t.number("crash_speed", &P::crash_speed, 2.0, "m/s", Range::above(0.0), "touchdown sink speed above this is a crash");
+    t.number("crash_tilt", &P::crash_tilt, 1.0, "rad", Range::openClosed(0.0, M_PI),
+             "touchdown tilt above this (a flip) is a crash");
+    return t;
+  }();
+  return table;
 }
 
-}  // namespace
-
-SimParams SimParams::load(const ConfigReader& sim) {
-  sim.allowOnly({"physics_rate_hz", "truth_rate_hz", "imu", "vio", "battery", "ground", "disturbance",
-                 "initial_position", "initial_yaw", "seed", "gravity"});
-  SimParams p;
-  sim.read("physics_rate_hz", p.physics_rate_hz);
-  sim.read("truth_rate_hz", p.truth_rate_hz);
-
-  const ConfigReader imu = sim.child("imu");
-  imu.allowOnly({"rate_hz", "gyro_noise_density", "accel_noise_density", "gyro_bias_random_walk",
-                 "accel_bias_random_walk", "gyro_bias_initial_max", "accel_bias_initial_max", "gyro_range",
-                 "accel_range"});
-  imu.read("rate_hz", p.imu.rate_hz);
-  imu.read("gyro_noise_density", p.imu.gyro_noise_density);
-  imu.read("accel_noise_density", p.imu.accel_noise_density);
-  imu.read("gyro_bias_random_walk", p.imu.gyro_bias_random_walk);
-  imu.read("accel_bias_random_walk", p.imu.accel_bias_random_walk);
-  imu.read("gyro_bias_initial_max", p.imu.gyro_bias_initial_max);
-  imu.read("accel_bias_initial_max", p.imu.accel_bias_initial_max);
-  imu.read("gyro_range", p.imu.gyro_range);
-  imu.read("accel_range", p.imu.accel_range);
-
-  const ConfigReader vio = sim.child("vio");
-  vio.allowOnly({"rate_hz", "latency_min_s", "latency_max_s", "position_std", "attitude_std"});
-  vio.read("rate_hz", p.vio.rate_hz);
-  vio.read("latency_min_s", p.vio.latency_min_s);
-  vio.read("latency_max_s", p.vio.latency_max_s);
-  vio.read("position_std", p.vio.position_std);
-  vio.read("attitude_std", p.vio.attitude_std);
-
-  const ConfigReader battery = sim.child("battery");
-  battery.allowOnly({"enabled", "cell_count", "capacity_mah", "internal_resistance", "initial_charge",
-                     "calibration_charge", "idle_power", "rotor_power_coefficient", "thrust_voltage_exponent"});
-  battery.read("enabled", p.battery.enabled);
-  battery.read("cell_count", p.battery.cell_count);
-  battery.read("capacity_mah", p.battery.capacity_mah);
-  battery.read("internal_resistance", p.battery.internal_resistance);
-  battery.read("initial_charge", p.battery.initial_charge);
-  battery.read("calibration_charge", p.battery.calibration_charge);
-  battery.read("idle_power", p.battery.idle_power);
-  battery.read("rotor_power_coefficient", p.battery.rotor_power_coefficient);
-  battery.read("thrust_voltage_exponent", p.battery.thrust_voltage_exponent);
-
-  const ConfigReader ground = sim.child("ground");
-  ground.allowOnly({"crash_speed", "crash_tilt"});
-  ground.read("crash_speed", p.ground.crash_speed);
-  ground.read("crash_tilt", p.ground.crash_tilt);
-
-  const ConfigReader disturbance = sim.child("disturbance");
-  disturbance.allowOnly({"max_force", "max_torque", "max_duration", "max_stiffness", "max_damping"});
-  disturbance.read("max_force", p.disturbance.max_force);
-  disturbance.read("max_torque", p.disturbance.max_torque);
-  disturbance.read("max_duration", p.disturbance.max_duration);
-  disturbance.read("max_stiffness", p.disturbance.max_stiffness);
-  disturbance.read("max_damping", p.disturbance.max_damping);
-
-  sim.read("initial_position", p.initial_position);
-  sim.read("initial_yaw", p.initial_yaw);
-  int seed = static_cast<int>(p.seed);
-  sim.read("seed", seed);
-  p.seed = seed;
-  sim.read("gravity", p.gravity);
-
-  const std::string reason = p.invalidReason();
-  if (!reason.empty()) {
-    const auto colon = reason.find(':');
-    throw ConfigError(sim.keyPath(reason.substr(0, colon)), reason.substr(colon + 2));
-  }
-  return p;
+const ParamTable<DisturbanceLimits>& DisturbanceLimits::declaration() {
+  static const ParamTable<DisturbanceLimits> table = [] {
+    using P = DisturbanceLimits;
+    ParamTable<P> t("bounds of accepted DISTURBANCE requests");
+    t.number("max_force", &P::max_force, 50.0, "N", Range::above(0.0), "larger DISTURBANCE forces are rejected");
+    t.number("max_torque", &P::max_torque, 1.0, "N m", Range::above(0.0), "larger DISTURBANCE torques are rejected");
+    t.number("max_duration", &P::max_duration, 600.0, "s", Range::openClosed(0.0, 86400.0), "longest DISTURBANCE");
+    t.number("max_stiffness", &P::max_stiffness, 1000.0, "N/m", Range::atLeast(0.0), "MODE_HOLD spring");
+    t.number("max_damping", &P::max_damping, 100.0, "N s/m", Range::atLeast(0.0), "MODE_HOLD damper");
+    return t;
+  }();
+  return table;
 }
 
-std::string SimParams::invalidReason() const {
-  if (physics_rate_hz < 1000 || physics_rate_hz > 100000 || 1000000 % physics_rate_hz != 0) {
-    return "physics_rate_hz: must be in [1000, 100000] with a whole-microsecond period";
-  }
-  if (truth_rate_hz <= 0 || physics_rate_hz % truth_rate_hz != 0) return "truth_rate_hz: must divide physics_rate_hz";
-  if (std::string why = imuInvalidReason(imu, physics_rate_hz); !why.empty()) return why;
-  if (std::string why = vioInvalidReason(vio, physics_rate_hz); !why.empty()) return why;
-  if (std::string why = batteryInvalidReason(battery); !why.empty()) return why;
-  if (!finiteAbove(ground.crash_speed, 0.0)) return "ground.crash_speed: must be > 0";
-  if (!(finiteAbove(ground.crash_tilt, 0.0) && ground.crash_tilt <= M_PI)) return "ground.crash_tilt: must be in (0, pi]";
-  if (std::string why = disturbanceInvalidReason(disturbance); !why.empty()) return why;
-  if (!initial_position.allFinite() || initial_position.z() < 0.0) {
-    return "initial_position: must be finite with z >= 0 (the ground is z = 0)";
-  }
-  if (!std::isfinite(initial_yaw)) return "initial_yaw: must be finite";
-  if (seed < 0) return "seed: must be >= 0";
-  if (!(finiteAbove(gravity, 0.0) && gravity < 100.0)) return "gravity: must be in (0, 100) m/s^2";
-  return {};
+const ParamTable<SimParams>& SimParams::declaration() {
+  static const ParamTable<SimParams> table = [] {
+    using P = SimParams;
+    ParamTable<P> t("plant simulator (sdlqr-sim); sensor noise defaults are the ones the estimator assumes");
+    t.integer("physics_rate_hz", &P::physics_rate_hz, 1000, "Hz", Range::closed(1000, 100000),
+              "RK4 rate, whole-microsecond period");
+    t.integer("truth_rate_hz", &P::truth_rate_hz, 250, "Hz", Range::atLeast(1), "SIM_TRUTH rate, divides physics_rate_hz");
+    t.section("imu", &P::imu);
+    t.section("vio", &P::vio);
+    t.section("battery", &P::battery);
+    t.section("ground", &P::ground);
+    t.section("disturbance", &P::disturbance);
+    t.list("initial_position", &P::initial_position, {0.0, 0.0, 0.0}, "m", Range::finite(),
+           "world; z = 0 starts landed, z > 0 in the air");
+    t.number("initial_yaw", &P::initial_yaw, 0.0, "rad", Range::finite(), "heading at start");
+    t.integer("seed", &P::seed, 1, "-", Range::atLeast(0), "noise seed (--seed overrides)");
+    t.number("gravity", &P::gravity, kDefaultGravity, "m/s^2", Range::open(0.0, 100.0), "gravity of the simulated world");
+    t.check("physics_rate_hz", [](const P& p) { return 1000000 % p.physics_rate_hz == 0; },
+            "must give a whole-microsecond period");
+    t.check("truth_rate_hz", [](const P& p) { return p.physics_rate_hz % p.truth_rate_hz == 0; },
+            "must divide physics_rate_hz");
+    t.check("imu.rate_hz", [](const P& p) { return p.physics_rate_hz % p.imu.rate_hz == 0; },
+            "must divide physics_rate_hz");
+    t.check("vio.rate_hz", [](const P& p) { return p.vio.rate_hz <= p.physics_rate_hz; },
+            "must be in [1, physics_rate_hz]");
+    t.check("initial_position", [](const P& p) { return p.initial_position.z() >= 0.0; },
+            "z must be >= 0 (the ground is z = 0)");
+    return t;
+  }();
+  return table;
 }
 
 }  // namespace sdlqr::sim

@@ -10,17 +10,10 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "sdlqr/config/config.hpp"
-#include "sdlqr/math/lqr_params.hpp"
-#include "sdlqr/math/vehicle.hpp"
-#include "sdlqr/health/watchdog.hpp"
-#include "sdlqr/controller/controller_params.hpp"
-#include "sdlqr/gains/gains_params.hpp"
-#include "sdlqr/estimator/estimator_params.hpp"
-#include "sdlqr/lowlevel/lowlevel_params.hpp"
-#include "sdlqr/sim/sim_params.hpp"
-#include "sdlqr/trajectory/params.hpp"
+#include "sdlqr/params/vehicle_file.hpp"
 
 namespace {
 
@@ -49,17 +42,12 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (!root.IsMap()) return 0;
   try {
     const ConfigReader config(root, "");
-    config.allowOnly({"vehicle", "lqr", "sim", "estimator", "lowlevel", "controller", "gains", "logger", "mission",
-                      "trajectory", "faults"});
-    loadSection<VehicleParams>(config, "vehicle");
-    loadSection<LqrParams>(config, "lqr");
-    loadSection<FaultParams>(config, "faults");
-    loadSection<controller::ControllerParams>(config, "controller");
-    loadSection<gains::GainsParams>(config, "gains");
-    loadSection<lowlevel::LowlevelParams>(config, "lowlevel");
-    loadSection<estimator::EstimatorParams>(config, "estimator");
-    loadSection<sim::SimParams>(config, "sim");
-    loadSection<trajectory::TrajectoryParams>(config, "trajectory");
+    config.allowOnly(vehicleFileSections());
+    // Every section of the vehicle file (the one list in params::forEachSection), each on its own.
+    params::VehicleFile file;
+    params::forEachSection(file, [&](const char* name, auto& section) {
+      loadSection<std::decay_t<decltype(section)>>(config, name);
+    });
   } catch (const ConfigError&) {
   }
   return 0;

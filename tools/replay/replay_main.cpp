@@ -14,6 +14,7 @@
 #include "sdlqr/messages/channels.hpp"
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/config/config.hpp"
+#include "sdlqr/config/print_config.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
 #include "sdlqr/replay/flight_loader.hpp"
@@ -130,6 +131,14 @@ int main(int argc, char** argv) {
     params.controller = controller::ControllerParams::load(config.child("controller"));
     params.gains = gains::GainsParams::load(config.child("gains"));
     params.faults = FaultParams::load(config.child("faults"));
+    params.validation = ValidationLimits::load(config.child("validation"));
+    if (options.print_config) {
+      printProcessConfig(std::cout, "sdlqr-replay", options.config_path,
+                         {printedSection("lqr", params.lqr), printedSection("estimator", params.estimator),
+                          printedSection("controller", params.controller), printedSection("gains", params.gains),
+                          printedSection("faults", params.faults), printedSection("validation", params.validation)});
+      return 0;
+    }
 
     const auto load_start = std::chrono::steady_clock::now();
     replay::LoadStats load;

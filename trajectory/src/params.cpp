@@ -1,50 +1,35 @@
 #include "sdlqr/trajectory/params.hpp"
 
-#include <cmath>
-
 namespace sdlqr::trajectory {
 
-namespace {
-bool positiveFinite(double value) { return std::isfinite(value) && value > 0.0; }
-}  // namespace
+TrajectoryParams::TrajectoryParams() { declaration().setDefaults(*this); }
 
-TrajectoryParams TrajectoryParams::load(const ConfigReader& trajectory) {
-  trajectory.allowOnly({"sample_dt", "check_dt", "height_offset", "laps", "periodic", "yaw", "fast_v_max",
-                        "slow_v_max", "ellipse_speed", "ellipse_samples", "max_position_jump", "accel_mismatch_max"});
-  TrajectoryParams p;
-  trajectory.read("sample_dt", p.sample_dt);
-  trajectory.read("check_dt", p.check_dt);
-  trajectory.read("height_offset", p.height_offset);
-  trajectory.read("laps", p.laps);
-  trajectory.read("periodic", p.periodic);
-  trajectory.read("yaw", p.yaw);
-  trajectory.read("fast_v_max", p.fast_v_max);
-  trajectory.read("slow_v_max", p.slow_v_max);
-  trajectory.read("ellipse_speed", p.ellipse_speed);
-  trajectory.read("ellipse_samples", p.ellipse_samples);
-  trajectory.read("max_position_jump", p.max_position_jump);
-  trajectory.read("accel_mismatch_max", p.accel_mismatch_max);
-  const std::string reason = p.invalidReason();
-  if (!reason.empty()) {
-    const auto colon = reason.find(':');
-    throw ConfigError(trajectory.keyPath(reason.substr(0, colon)), reason.substr(colon + 2));
-  }
-  return p;
-}
-
-std::string TrajectoryParams::invalidReason() const {
-  if (!positiveFinite(sample_dt) || sample_dt > 10.0) return "sample_dt: must be in (0, 10] s";
-  if (!positiveFinite(check_dt) || check_dt > sample_dt) return "check_dt: must be > 0 and <= sample_dt";
-  if (!std::isfinite(height_offset)) return "height_offset: must be finite";
-  if (laps < 1 || laps > 100) return "laps: must be in [1, 100]";
-  if (!std::isfinite(yaw)) return "yaw: must be finite";
-  if (!positiveFinite(fast_v_max)) return "fast_v_max: must be > 0";
-  if (!positiveFinite(slow_v_max)) return "slow_v_max: must be > 0";
-  if (!positiveFinite(ellipse_speed)) return "ellipse_speed: must be > 0";
-  if (ellipse_samples < 3 || ellipse_samples > 100000) return "ellipse_samples: must be in [3, 100000]";
-  if (!positiveFinite(max_position_jump)) return "max_position_jump: must be > 0";
-  if (!positiveFinite(accel_mismatch_max)) return "accel_mismatch_max: must be > 0";
-  return {};
+const ParamTable<TrajectoryParams>& TrajectoryParams::declaration() {
+  static const ParamTable<TrajectoryParams> table = [] {
+    using P = TrajectoryParams;
+    ParamTable<P> t("trajectory generation and checking; defaults reproduce the paper's experiments (§III-C)");
+    t.number("sample_dt", &P::sample_dt, 0.1, "s", Range::openClosed(0.0, 10.0),
+             "sample spacing of generated trajectories (paper: 0.1 s)");
+    t.number("check_dt", &P::check_dt, 0.001, "s", Range::above(0.0), "grid of the speed and input feasibility checks");
+    t.number("height_offset", &P::height_offset, 1.0, "m", Range::finite(),
+             "added to the paper's waypoint z (theirs start at the floor)");
+    t.integer("laps", &P::laps, 2, "-", Range::closed(1, 100), "laps of the rest-to-rest min-snap path through p0..p3");
+    t.flag("periodic", &P::periodic, false, "true: min-snap as one closed lap, repeated by the tracker");
+    t.number("yaw", &P::yaw, 0.0, "rad", Range::finite(), "heading where waypoints give none");
+    t.number("fast_v_max", &P::fast_v_max, 3.0, "m/s", Range::above(0.0), "min-snap of paper III-C.2");
+    t.number("slow_v_max", &P::slow_v_max, 1.0, "m/s", Range::above(0.0),
+             "min-snap of paper III-C.4 (disturbance experiment)");
+    t.number("ellipse_speed", &P::ellipse_speed, 2.0, "m/s", Range::above(0.0), "infeasible ellipse of paper III-C.3");
+    t.integer("ellipse_samples", &P::ellipse_samples, 36, "-", Range::closed(3, 100000),
+              "ellipse samples per lap (d alpha = 2 pi / n)");
+    t.number("max_position_jump", &P::max_position_jump, 1.0, "m", Range::above(0.0),
+             "largest step between samples accepted from a file or the bus");
+    t.number("accel_mismatch_max", &P::accel_mismatch_max, 0.5, "m/s^2", Range::above(0.0),
+             "sampled references: inputs vs motion they should produce (feasibility.hpp)");
+    t.check("check_dt", [](const P& p) { return p.check_dt <= p.sample_dt; }, "must be <= sample_dt");
+    return t;
+  }();
+  return table;
 }
 
 SampleChecks TrajectoryParams::sampleChecks() const {

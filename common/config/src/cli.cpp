@@ -144,6 +144,9 @@ void addProcessOptions(ArgParser& parser, ProcessOptions* options) {
   parser.addOption("--lcm-url", &options->lcm_url, "URL",
                    "LCM provider (default: $LCM_DEFAULT_URL or udpm://239.255.76.67:7667?ttl=0)");
   parser.addOption("--vehicle", &options->vehicle, "PREFIX", "channel prefix, e.g. QUAD1 gives QUAD1/IMU");
+  parser.addFlag("--print-config", &options->print_config,
+                 "print the sections of the vehicle file this program reads, with the values it\n"
+                 "                          would run with (defaults and --config), as YAML, and exit");
   addBusLayoutOption(parser, options);
 }
 

@@ -1,5 +1,6 @@
 #include "sdlqr/config/config.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -21,11 +22,16 @@ YAML::Node loadYamlFile(const std::string& path) {
   }
 }
 
+const std::vector<std::string>& vehicleFileSections() {
+  static const std::vector<std::string> sections{"vehicle",    "lqr",      "sim",        "estimator", "controller",
+                                                 "gains",      "lowlevel", "trajectory", "faults",    "validation"};
+  return sections;
+}
+
 ConfigReader loadVehicleConfig(const std::string& path) {
   if (path.empty()) return ConfigReader(YAML::Node(YAML::NodeType::Map), "");
   ConfigReader root(loadYamlFile(path), "");
-  root.allowOnly({"vehicle", "lqr", "sim", "estimator", "lowlevel", "controller", "gains", "logger", "mission", "trajectory",
-                 "faults"});
+  root.allowOnly(vehicleFileSections());
   return root;
 }
 
@@ -43,13 +49,59 @@ ConfigReader ConfigReader::child(const std::string& key) const {
 }
 
 void ConfigReader::allowOnly(std::initializer_list<const char*> allowed) const {
+  allowOnly(std::vector<std::string>(allowed.begin(), allowed.end()));
+}
+
+namespace {
+
+// Edits (insert, delete, substitute) that turn `a` into `b`.
+size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// "unknown key (did you mean 'q_diag'?)" for a near miss, else "unknown key".
+std::string unknownKeyReason(const std::string& key, const std::vector<std::string>& allowed) {
+  const std::string* nearest = nullptr;
+  size_t best = 3;  // more than two edits away is not a typo of it
+  for (const std::string& name : allowed) {
+    const size_t distance = editDistance(key, name);
+    if (distance < best) {
+      best = distance;
+      nearest = &name;
+    }
+  }
+  return nearest ? "unknown key (did you mean '" + *nearest + "'?)" : "unknown key";
+}
+
+}  // namespace
+
+void ConfigReader::allowOnly(const std::vector<std::string>& allowed) const {
   if (!node_ || !node_.IsMap()) return;
   for (const auto& entry : node_) {
-    const std::string key = entry.first.as<std::string>();
-    bool known = false;
-    for (const char* name : allowed) known = known || key == name;
-    if (!known) throw ConfigError(keyPath(key), "unknown key");
+    if (!entry.first.IsScalar()) throw ConfigError(keyPath("<key>"), "a key must be a plain word");
+    const std::string key = entry.first.Scalar();
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
+      throw ConfigError(keyPath(key), unknownKeyReason(key, allowed));
+    }
   }
+}
+
+void throwIfInvalid(const ConfigReader& reader, const std::string& reason) {
+  if (reason.empty()) return;
+  const auto colon = reason.find(": ");
+  if (colon == std::string::npos) throw ConfigError(reader.path(), reason);
+  throw ConfigError(reader.keyPath(reason.substr(0, colon)), reason.substr(colon + 2));
 }
 
 namespace {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "sdlqr/math/vehicle.hpp"
+
 namespace sdlqr {
 
 namespace {
@@ -26,6 +28,36 @@ bool modeKnown(ReferenceMode mode) {
 }
 
 }  // namespace
+
+ValidationLimits::ValidationLimits() { declaration().setDefaults(*this); }
+
+const ParamTable<ValidationLimits>& ValidationLimits::declaration() {
+  static const ParamTable<ValidationLimits> table = [] {
+    using P = ValidationLimits;
+    ParamTable<P> t("limits of the message validation in every process that receives messages");
+    t.number("quaternion_norm_tolerance", &P::quaternion_norm_tolerance, 0.05, "-", Range::open(0.0, 0.5),
+             "accept 1 - tol <= |q| <= 1 + tol");
+    t.number("max_position", &P::max_position, 1000.0, "m", Range::above(0.0), "|p| per axis");
+    t.number("max_velocity", &P::max_velocity, 50.0, "m/s", Range::above(0.0), "speed |v|");
+    t.number("max_body_rate", &P::max_body_rate, 35.0, "rad/s", Range::openClosed(0.0, 100.0),
+             "largest |omega| anywhere (estimates, references, RATE_CMD, lqr.omega_max, failsafe): "
+             "2000 deg/s, the gyro's range");
+    t.number("max_thrust", &P::max_thrust, 60.0, "m/s^2", Range::above(0.0),
+             "mass-normalized thrust of references, trajectories and a PARAMS c_max");
+    t.number("max_gain", &P::max_gain, 1e4, "-", Range::above(0.0), "|K_ij| of GAINS");
+    t.number("max_weight", &P::max_weight, 1e8, "-", Range::above(0.0), "largest Q or R entry a PARAMS update may set");
+    t.integer("max_trajectory_samples", &P::max_trajectory_samples, 100000, "-", Range::closed(2, 10000000),
+              "samples of one TRAJECTORY");
+    return t;
+  }();
+  return table;
+}
+
+std::string lqrLimitsInvalidReason(const LqrParams& lqr, const ValidationLimits& limits) {
+  if (!(lqr.omega_max <= limits.max_body_rate)) return "omega_max: must be <= validation.max_body_rate";
+  if (!(lqr.c_max <= limits.max_thrust)) return "c_max: must be <= validation.max_thrust";
+  return {};
+}
 
 RejectReason validate(const StateEstimate& m, const ValidationLimits& limits) {
   if (!finite(m.position) || !finite(m.orientation) || !finite(m.velocity) || !finite(m.body_rate) ||
@@ -89,7 +121,7 @@ RejectReason validate(const Command& m, const ValidationLimits& limits) {
   return RejectReason::kNone;
 }
 
-RejectReason validate(const ParamsUpdate& m, const ValidationLimits&) {
+RejectReason validate(const ParamsUpdate& m, const ValidationLimits& limits) {
   if (m.field_mask & ~(ParamsUpdate::kWeights | ParamsUpdate::kLimits | ParamsUpdate::kMass | ParamsUpdate::kTracking)) {
     return RejectReason::kBadEnum;
   }
@@ -102,15 +134,17 @@ RejectReason validate(const ParamsUpdate& m, const ValidationLimits&) {
   }
   if ((m.field_mask & ParamsUpdate::kMass) && !std::isfinite(m.mass)) return RejectReason::kNonFinite;
   if ((m.field_mask & ParamsUpdate::kWeights) &&
-      (m.q_diag.minCoeff() < 0.0 || m.r_diag.minCoeff() <= 0.0 || m.q_diag.maxCoeff() > 1e8 ||
-       m.r_diag.maxCoeff() > 1e8)) {
+      (m.q_diag.minCoeff() < 0.0 || m.r_diag.minCoeff() <= 0.0 || m.q_diag.maxCoeff() > limits.max_weight ||
+       m.r_diag.maxCoeff() > limits.max_weight)) {
     return RejectReason::kOutOfRange;
   }
   if ((m.field_mask & ParamsUpdate::kLimits) &&
-      !(m.omega_max > 0.0 && m.omega_max <= 20.0 && m.c_min >= 0.0 && m.c_max > m.c_min && m.c_max <= 60.0)) {
+      !(m.omega_max > 0.0 && m.omega_max <= limits.max_body_rate && m.c_min >= 0.0 && m.c_max > m.c_min &&
+        m.c_max <= limits.max_thrust)) {
     return RejectReason::kOutOfRange;
   }
-  if ((m.field_mask & ParamsUpdate::kMass) && !(m.mass > 0.0 && m.mass <= 100.0)) return RejectReason::kOutOfRange;
+  // The vehicle's own check (liftable) is the bodyrate loop's; the range is vehicle.mass's.
+  if ((m.field_mask & ParamsUpdate::kMass) && !kMassRange.contains(m.mass)) return RejectReason::kOutOfRange;
   if ((m.field_mask & ParamsUpdate::kTracking) && m.tracking != ReferenceMode::kSpatial &&
       m.tracking != ReferenceMode::kTemporal) {
     return RejectReason::kBadEnum;

@@ -1,69 +1,85 @@
 #include "sdlqr/math/lqr_params.hpp"
 
-#include <cmath>
 #include <string>
+
+#include "sdlqr/math/vehicle.hpp"
 
 namespace sdlqr {
 
 const char* toString(LqrMethod method) { return method == LqrMethod::kTangent ? "tangent" : "iterative"; }
 
 bool parseLqrMethod(const std::string& text, LqrMethod& out) {
-  if (text == "tangent") {
-    out = LqrMethod::kTangent;
-    return true;
-  }
-  if (text == "iterative") {
-    out = LqrMethod::kIterative;
-    return true;
+  for (LqrMethod method : {LqrMethod::kTangent, LqrMethod::kIterative}) {
+    if (text == toString(method)) {
+      out = method;
+      return true;
+    }
   }
   return false;
 }
 
-LqrParams LqrParams::load(const ConfigReader& lqr) {
-  lqr.allowOnly({"q_diag", "r_diag", "dt", "omega_max", "c_min", "c_max", "gravity", "method", "tolerance",
-                 "max_iterations"});
-  LqrParams p;
-  lqr.read("q_diag", p.q_diag);
-  lqr.read("r_diag", p.r_diag);
-  lqr.read("dt", p.dt);
-  lqr.read("omega_max", p.omega_max);
-  lqr.read("c_min", p.c_min);
-  lqr.read("c_max", p.c_max);
-  lqr.read("gravity", p.gravity);
-  std::string method = toString(p.method);
-  lqr.read("method", method);
-  if (!parseLqrMethod(method, p.method)) throw ConfigError(lqr.keyPath("method"), "expected tangent or iterative");
-  lqr.read("tolerance", p.tolerance);
-  lqr.read("max_iterations", p.max_iterations);
-  const std::string reason = p.invalidReason();
-  if (!reason.empty()) {
-    const auto colon = reason.find(':');
-    throw ConfigError(lqr.keyPath(reason.substr(0, colon)), reason.substr(colon + 2));
-  }
-  return p;
+LqrParams::LqrParams() { declaration().setDefaults(*this); }
+
+const ParamTable<LqrParams>& LqrParams::declaration() {
+  static const ParamTable<LqrParams> table = [] {
+    using P = LqrParams;
+    ParamTable<P> t("weights and limits of the state-dependent LQR (paper §III-B)");
+    t.list("q_diag", &P::q_diag, {100, 100, 100, 1, 1, 1, 1, 10, 10, 10}, "-", Range::atLeast(0.0),
+           "state cost: p (m), q (-), v (m/s); >= 0 keeps Q positive semidefinite");
+    t.list("r_diag", &P::r_diag, {1, 5, 5, 0.1}, "-", Range::above(0.0),
+           "input cost: omega x, y, z (rad/s), thrust (m/s^2); > 0 keeps R positive definite");
+    t.number("dt", &P::dt, 0.01, "s", Range::openClosed(0.0, 1.0), "LQR discretization step = control period (100 Hz)");
+    t.number("omega_max", &P::omega_max, 2.0, "rad/s", Range::above(0.0),
+             "||omega_des|| limit (at most validation.max_body_rate)");
+    t.number("c_min", &P::c_min, 2.0, "m/s^2", Range::atLeast(0.0), "thrust lower limit");
+    t.number("c_max", &P::c_max, 18.0, "m/s^2", Range::finite(), "thrust upper limit");
+    t.number("gravity", &P::gravity, kDefaultGravity, "m/s^2", Range::above(0.0), "gravity of the model");
+    t.choice("method", &P::method, LqrMethod::kTangent,
+             {{toString(LqrMethod::kTangent), LqrMethod::kTangent}, {toString(LqrMethod::kIterative), LqrMethod::kIterative}},
+             "tangent (9-state doubling) or iterative (paper, 10-state)");
+    t.number("tolerance", &P::tolerance, 1e-12, "-", Range::open(0.0, 1.0), "relative convergence tolerance");
+    t.integer("max_iterations", &P::max_iterations, 0, "-", Range::atLeast(0),
+              "iteration cap; 0: the method's own (64 doublings, 100000 iterations)");
+    t.check("c_max", [](const P& p) { return p.c_max > p.c_min; }, "must be > c_min");
+    return t;
+  }();
+  return table;
 }
 
-std::string LqrParams::invalidReason() const {
-  // Called by every solveLqr: no stream is built unless there is a message to format (an
-  // ostringstream per call cost about 0.2 us and pulled the locale code into every cold solve).
-  for (int i = 0; i < kStateDim; ++i) {
-    if (!std::isfinite(q_diag[i]) || q_diag[i] < 0.0) {
-      return "q_diag[" + std::to_string(i) + "]: must be finite and >= 0 (Q positive semidefinite)";
-    }
+const char* toString(ParamsOutcome outcome) {
+  switch (outcome) {
+    case ParamsOutcome::kApplied: return "applied";
+    case ParamsOutcome::kNotNewer: return "not_newer";
+    case ParamsOutcome::kInvalid: return "invalid";
   }
-  for (int i = 0; i < kInputDim; ++i) {
-    if (!std::isfinite(r_diag[i]) || r_diag[i] <= 0.0) {
-      return "r_diag[" + std::to_string(i) + "]: must be finite and > 0 (R positive definite)";
-    }
+  return "unknown";
+}
+
+ParamsOutcome RuntimeLqrParams::apply(const ParamsUpdate& update) {
+  if (update.utime < utime_ || (update.utime == utime_ && update.seq <= seq_)) return ParamsOutcome::kNotNewer;
+  constexpr int32_t kKnown = ParamsUpdate::kWeights | ParamsUpdate::kLimits | ParamsUpdate::kMass | ParamsUpdate::kTracking;
+  if ((update.field_mask & ~kKnown) != 0) return ParamsOutcome::kInvalid;
+  // The update is one change: a bad part the others' owners would refuse refuses it all here too.
+  if ((update.field_mask & ParamsUpdate::kMass) && !kMassRange.contains(update.mass)) return ParamsOutcome::kInvalid;
+  if ((update.field_mask & ParamsUpdate::kTracking) && update.tracking != ReferenceMode::kSpatial &&
+      update.tracking != ReferenceMode::kTemporal) {
+    return ParamsOutcome::kInvalid;
   }
-  if (!std::isfinite(dt) || dt <= 0.0 || dt > 1.0) return "dt: must be in (0, 1] s";
-  if (!std::isfinite(omega_max) || omega_max <= 0.0) return "omega_max: must be > 0";
-  if (!std::isfinite(c_min) || c_min < 0.0) return "c_min: must be finite and >= 0";
-  if (!std::isfinite(c_max) || c_max <= c_min) return "c_max: must be finite and > c_min";
-  if (!std::isfinite(gravity) || gravity <= 0.0) return "gravity: must be > 0";
-  if (!std::isfinite(tolerance) || tolerance <= 0.0 || tolerance >= 1.0) return "tolerance: must be in (0, 1)";
-  if (max_iterations < 0) return "max_iterations: must be >= 0";
-  return {};
+  LqrParams next = params_;
+  if (update.field_mask & ParamsUpdate::kWeights) {
+    next.q_diag = update.q_diag;
+    next.r_diag = update.r_diag;
+  }
+  if (update.field_mask & ParamsUpdate::kLimits) {
+    next.omega_max = update.omega_max;
+    next.c_min = update.c_min;
+    next.c_max = update.c_max;
+  }
+  if (!next.valid()) return ParamsOutcome::kInvalid;
+  params_ = next;
+  utime_ = update.utime;
+  seq_ = update.seq;
+  return ParamsOutcome::kApplied;
 }
 
 }  // namespace sdlqr

@@ -27,60 +27,63 @@ Mat44 VehicleParams::effectiveness() const {
   return e;
 }
 
-VehicleParams VehicleParams::load(const ConfigReader& vehicle) {
-  vehicle.allowOnly({"mass", "inertia_diag", "arm_length", "max_rotor_thrust", "min_rotor_thrust",
-                     "torque_coefficient", "motor_time_constant", "rotor_drag", "rotor_xy", "yaw_sign"});
-  VehicleParams p;
-  vehicle.read("mass", p.mass);
-  vehicle.read("inertia_diag", p.inertia_diag);
-  vehicle.read("arm_length", p.arm_length);
-  p.rotor_xy = defaultRotorPositions(p.arm_length);
-  vehicle.read("max_rotor_thrust", p.max_rotor_thrust);
-  vehicle.read("min_rotor_thrust", p.min_rotor_thrust);
-  vehicle.read("torque_coefficient", p.torque_coefficient);
-  vehicle.read("motor_time_constant", p.motor_time_constant);
-  vehicle.read("rotor_drag", p.rotor_drag);
-  if (vehicle.has("rotor_xy")) {
-    Eigen::Matrix<double, 8, 1> flat;
-    vehicle.read("rotor_xy", flat);  // x0, y0, x1, y1, ...
-    for (int i = 0; i < 4; ++i) p.rotor_xy.col(i) << flat[2 * i], flat[2 * i + 1];
-  }
-  vehicle.read("yaw_sign", p.yaw_sign);
-  const std::string reason = p.invalidReason();
-  if (!reason.empty()) {
-    const auto colon = reason.find(':');
-    throw ConfigError(vehicle.keyPath(reason.substr(0, colon)), reason.substr(colon + 2));
-  }
-  return p;
+VehicleParams::VehicleParams() { declaration().setDefaults(*this); }
+
+std::string VehicleParams::massInvalidReason(double candidate_mass, double gravity) const {
+  if (!kMassRange.contains(candidate_mass)) return kMassRange.rule("kg");
+  if (!(4.0 * max_rotor_thrust > candidate_mass * gravity)) return "the rotors cannot lift it";
+  return {};
 }
 
-std::string VehicleParams::invalidReason() const {
-  if (!(mass > 0.0 && mass < 100.0)) return "mass: must be in (0, 100) kg";
-  for (int i = 0; i < 3; ++i) {
-    if (!(inertia_diag[i] > 0.0)) return "inertia_diag: every moment must be > 0";
-  }
-  // Principal moments of a rigid body satisfy the triangle inequality.
-  if (inertia_diag[0] + inertia_diag[1] < inertia_diag[2] || inertia_diag[1] + inertia_diag[2] < inertia_diag[0] ||
-      inertia_diag[0] + inertia_diag[2] < inertia_diag[1]) {
-    return "inertia_diag: violates the triangle inequality of principal moments";
-  }
-  if (!(arm_length > 0.0)) return "arm_length: must be > 0";
-  if (!(min_rotor_thrust >= 0.0)) return "min_rotor_thrust: must be >= 0";
-  if (!(max_rotor_thrust > min_rotor_thrust)) return "max_rotor_thrust: must be > min_rotor_thrust";
-  if (!(4.0 * max_rotor_thrust > mass * kDefaultGravity)) return "max_rotor_thrust: cannot lift the mass";
-  if (!(torque_coefficient > 0.0)) return "torque_coefficient: must be > 0";
-  if (!(motor_time_constant >= 0.0 && motor_time_constant < 1.0)) return "motor_time_constant: must be in [0, 1) s";
-  for (int i = 0; i < 3; ++i) {
-    if (!(rotor_drag[i] >= 0.0)) return "rotor_drag: every coefficient must be >= 0";
-  }
-  for (int i = 0; i < 4; ++i) {
-    if (std::abs(std::abs(yaw_sign[i]) - 1.0) > 0.0) return "yaw_sign: entries must be +1 or -1";
-  }
-  if (std::abs(yaw_sign.sum()) > 0.0) return "yaw_sign: needs two +1 and two -1";
-  // The layout must give full authority in thrust and all three torques.
-  Eigen::FullPivLU<Mat44> lu(effectiveness());
-  if (lu.rank() < 4) return "rotor_xy: rotor layout cannot produce every torque";
-  return {};
+namespace {
+
+using FlatRotors = Eigen::Matrix<double, 8, 1>;  // x0, y0, x1, y1, ...
+
+FlatRotors flatRotors(const VehicleParams& p) { return Eigen::Map<const FlatRotors>(p.rotor_xy.data()); }
+void setRotors(VehicleParams& p, const FlatRotors& flat) { p.rotor_xy = Eigen::Map<const Eigen::Matrix<double, 2, 4>>(flat.data()); }
+void xLayout(VehicleParams& p) { p.rotor_xy = VehicleParams::defaultRotorPositions(p.arm_length); }
+
+bool triangleInequality(const Vec3& j) { return j[0] + j[1] >= j[2] && j[1] + j[2] >= j[0] && j[0] + j[2] >= j[1]; }
+
+}  // namespace
+
+const ParamTable<VehicleParams>& VehicleParams::declaration() {
+  static const ParamTable<VehicleParams> table = [] {
+    using P = VehicleParams;
+    ParamTable<P> t("airframe, shared by the simulator (the plant) and the bodyrate loop (its model)");
+    t.number("mass", &P::mass, 0.255, "kg", kMassRange, "take-off weight");
+    t.list("inertia_diag", &P::inertia_diag, {9.0e-4, 9.0e-4, 1.6e-3}, "kg m^2", Range::above(0.0),
+           "principal moments about body x, y, z");
+    t.number("arm_length", &P::arm_length, 0.125, "m", Range::above(0.0), "centre to rotor axis: 250 mm diagonal / 2");
+    t.number("max_rotor_thrust", &P::max_rotor_thrust, 1.25, "N", Range::above(0.0),
+             "per rotor: 4 x 1.25 N = 2.0 x weight");
+    t.number("min_rotor_thrust", &P::min_rotor_thrust, 0.0, "N", Range::atLeast(0.0), "per rotor");
+    t.number("torque_coefficient", &P::torque_coefficient, 0.0125, "m", Range::above(0.0),
+             "rotor drag torque per newton of thrust");
+    t.number("motor_time_constant", &P::motor_time_constant, 0.03, "s", Range::closedOpen(0.0, 1.0),
+             "first-order lag from command to thrust");
+    t.list("rotor_drag", &P::rotor_drag, {0.30, 0.30, 0.10}, "1/s", Range::atLeast(0.0),
+           "linear rotor drag per body axis, mass-normalized");
+    t.list("yaw_sign", &P::yaw_sign, {-1, -1, 1, 1}, "-", Range::closed(-1.0, 1.0),
+           "reaction-torque sign per rotor (FR, BL CCW; FL, BR CW)");
+    t.derivedList<8>("rotor_xy", "m", Range::finite(),
+                     "rotor positions in the body frame (FR, BL, FL, BR); absent: the X layout of arm_length",
+                     "[x0, y0, x1, y1, x2, y2, x3, y3]", xLayout, flatRotors, setRotors);
+    // Principal moments of a rigid body satisfy the triangle inequality.
+    t.check("inertia_diag", [](const P& p) { return triangleInequality(p.inertia_diag); },
+            "violates the triangle inequality of principal moments");
+    t.check("max_rotor_thrust", [](const P& p) { return p.max_rotor_thrust > p.min_rotor_thrust; },
+            "must be > min_rotor_thrust");
+    t.check("max_rotor_thrust", [](const P& p) { return p.massInvalidReason(p.mass, kDefaultGravity).empty(); },
+            "cannot lift the mass");
+    t.check("yaw_sign", [](const P& p) { return (p.yaw_sign.array().abs() == 1.0).all(); }, "entries must be +1 or -1");
+    t.check("yaw_sign", [](const P& p) { return p.yaw_sign.sum() == 0.0; }, "needs two +1 and two -1");
+    // The layout must give full authority in thrust and all three torques.
+    t.check("rotor_xy", [](const P& p) { return Eigen::FullPivLU<Mat44>(p.effectiveness()).rank() == 4; },
+            "rotor layout cannot produce every torque");
+    return t;
+  }();
+  return table;
 }
 
 }  // namespace sdlqr

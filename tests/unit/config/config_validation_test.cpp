@@ -1,8 +1,9 @@
-// Config validation of every process, table-driven over config/quad255.yaml and two scenarios: for each field of
-// each section a wrong type, a non-finite and (numbers) a negative value, a list of the wrong
-// length, and an unknown key in every section; plus a missing and an unparsable file. Each case
-// runs the real executable (in a network namespace without interfaces) and expects exit code 2
-// and exactly one line on stderr that names the key.
+// Config validation of every process. The vehicle-file cases come from the parameter declarations
+// (declared_cases.hpp: every declared key with a wrong type, NaN, Inf, values outside its range, a
+// short list, ...; an unknown key in every section), the readers of each section from each
+// executable's --print-config; plus a missing and an unparsable file, and every field of two
+// scenarios. Each case runs the real executable (in a network namespace without interfaces) and
+// expects exit code 2 and exactly one line on stderr that names the key.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -20,43 +21,12 @@
 #include <string>
 #include <vector>
 
+#include "declared_cases.hpp"
+#include "sdlqr/params/vehicle_file.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
-
-// Which executables read which section (their main's ::load calls).
-const std::map<std::string, std::vector<std::string>>& readers() {
-  static const std::map<std::string, std::vector<std::string>> table{
-      {"vehicle", {"bin/sdlqr-sim", "bin/sdlqr-lowlevel"}},
-      {"lqr", {"bin/sdlqr-controller", "bin/sdlqr-gains", "bin/sdlqr-lowlevel", "bin/sdlqr-mission"}},
-      {"sim", {"bin/sdlqr-sim"}},
-      {"lowlevel", {"bin/sdlqr-lowlevel"}},
-      {"trajectory", {"bin/sdlqr-mission"}},
-      {"estimator", {"bin/sdlqr-estimator"}},
-      {"faults", {"bin/sdlqr-controller", "bin/sdlqr-gains", "bin/sdlqr-lowlevel"}},
-      {"controller", {"bin/sdlqr-controller"}},
-      {"gains", {"bin/sdlqr-gains"}},
-  };
-  return table;
-}
-
-std::vector<std::string> allExecutables() {
-  std::set<std::string> all;
-  for (const auto& [section, exes] : readers()) all.insert(exes.begin(), exes.end());
-  return {all.begin(), all.end()};
-}
-
-// Fields that legitimately take any finite number of either sign, with the reason.
-const std::map<std::string, const char*>& signedFields() {
-  static const std::map<std::string, const char*> table{
-      {"vehicle.yaw_sign", "a sign per rotor: -1 is one of the two valid values"},
-      {"sim.initial_position", "a position in the world"},
-      {"sim.initial_yaw", "an angle"},
-      {"trajectory.height_offset", "a shift of the waypoints' z, either way"},
-      {"trajectory.yaw", "an angle"},
-  };
-  return table;
-}
 
 struct Case {
   std::string name;       // gtest-safe
@@ -66,31 +36,6 @@ struct Case {
   std::string config_path;
   bool scenario = false;  // the file is a scenario for sdlqr-mission, not a vehicle file
 };
-
-std::string joined(const std::vector<std::string>& path) {
-  std::string out;
-  for (const std::string& part : path) out += (out.empty() ? "" : ".") + part;
-  return out;
-}
-
-std::string safeName(std::string text) {
-  for (char& c : text) {
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  }
-  return text;
-}
-
-std::string shortName(const std::string& executable) { return executable.substr(executable.rfind('/') + 1); }
-
-YAML::Node nodeAt(YAML::Node root, const std::vector<std::string>& path) {
-  YAML::Node node;
-  node.reset(root);
-  for (const std::string& key : path) {
-    YAML::Node next = node[key];
-    node.reset(next);
-  }
-  return node;
-}
 
 std::string emit(const YAML::Node& root) {
   YAML::Emitter out;
@@ -103,111 +48,109 @@ bool isNumber(const YAML::Node& scalar) {
   return YAML::convert<double>::decode(scalar, value);
 }
 
-void collectLeaves(const YAML::Node& node, std::vector<std::string>& path,
-                   std::vector<std::vector<std::string>>& leaves, std::vector<std::vector<std::string>>& maps) {
-  if (node.IsMap()) {
-    maps.push_back(path);
-    for (const auto& entry : node) {
-      path.push_back(entry.first.as<std::string>());
-      collectLeaves(entry.second, path, leaves, maps);
-      path.pop_back();
+std::string shortName(const std::string& executable) { return executable.substr(executable.rfind('/') + 1); }
+
+std::vector<std::string> configReaders() {
+  std::vector<std::string> out;
+  std::stringstream list(SDLQR_CONFIG_READERS);
+  std::string exe;
+  while (std::getline(list, exe, ',')) out.push_back(exe);
+  return out;
+}
+
+std::string quoted(const std::string& text) { return "'" + text + "'"; }
+
+// The executable with the positional argument it needs besides the vehicle file (read first).
+std::string commandOf(const std::string& executable) {
+  std::string command = quoted(std::string(SDLQR_BUILD_DIR) + "/" + executable);
+  if (executable == "bin/sdlqr-mission") command += " " + quoted(SDLQR_SCENARIO_FILE);
+  if (executable == "bin/sdlqr-replay") command += " " + quoted(std::string(SDLQR_BUILD_DIR) + "/no_such_flight.lcmlog");
+  if (executable == "bin/sdlqr-trajectory") command += " minsnap_fast --output /dev/null";
+  return command;
+}
+
+// What `executable --print-config` prints (the sections it reads, with the built-in defaults).
+std::string printedConfig(const std::string& executable) {
+  const std::string out_path = ::testing::TempDir() + "print_config_" + shortName(executable) + ".yaml";
+  const int status = std::system(
+      (commandOf(executable) + " --config " + quoted(SDLQR_VEHICLE_FILE) + " --print-config > " + quoted(out_path)).c_str());
+  EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << executable << " --print-config";
+  std::ifstream in(out_path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Which executables read which section: what each says with --print-config.
+const std::map<std::string, std::vector<std::string>>& readers() {
+  static const std::map<std::string, std::vector<std::string>> table = [] {
+    std::map<std::string, std::vector<std::string>> out;
+    for (const std::string& exe : configReaders()) {
+      const YAML::Node printed = YAML::Load(printedConfig(exe));
+      for (const auto& section : printed) out[section.first.as<std::string>()].push_back(exe);
     }
-  } else {
-    leaves.push_back(path);
-  }
+    return out;
+  }();
+  return table;
 }
 
-// The vehicle file plus the sections it leaves to the defaults, so those are tested as well.
-YAML::Node baseConfig() {
-  YAML::Node root = YAML::LoadFile(SDLQR_VEHICLE_FILE);
-  if (!root["controller"]) {
-    YAML::Node controller;
-    controller["rate_hz"] = 100.0;
-    controller["gains_stale_s"] = 0.3;
-    controller["gains_fallback_s"] = 1.0;
-    controller["takeoff_speed"] = 0.5;
-    controller["landing_speed"] = 0.4;
-    controller["rejoin_height"] = 0.2;
-    controller["tracking"] = "spatial";
-    root["controller"] = controller;
+// The printed blocks ("# help\nname:\n  key: ...") of a vehicle-file text, by section name.
+std::map<std::string, std::string> sectionBlocks(const std::string& text) {
+  std::map<std::string, std::string> blocks;
+  std::stringstream in(text);
+  std::string line, block, name;
+  auto finish = [&] {
+    if (!name.empty()) blocks[name] = block;
+    block.clear();
+    name.clear();
+  };
+  while (std::getline(in, line)) {
+    if (line.empty()) {
+      finish();
+      continue;
+    }
+    block += line + "\n";
+    if (name.empty() && !line.empty() && line[0] != '#' && line.back() == ':') name = line.substr(0, line.size() - 1);
   }
-  if (!root["gains"]) {
-    YAML::Node gains;
-    gains["rate_hz"] = 10.0;
-    gains["state_timeout_s"] = 0.5;
-    root["gains"] = gains;
-  }
-  return root;
-}
-
-// The variant of `root` with the leaf at `path` replaced by `value` (a YAML fragment).
-std::string withValue(const YAML::Node& root, const std::vector<std::string>& path, const YAML::Node& value) {
-  YAML::Node copy = YAML::Clone(root);
-  YAML::Node leaf = nodeAt(copy, path);
-  leaf = value;
-  return emit(copy);
+  finish();
+  return blocks;
 }
 
 std::vector<Case> buildCases() {
   std::vector<Case> cases;
-  const YAML::Node root = baseConfig();
-  std::vector<std::vector<std::string>> leaves, maps;
-  std::vector<std::string> path;
-  collectLeaves(root, path, leaves, maps);
-
-  auto add = [&](const std::string& what, const std::string& key, const std::string& yaml, bool every_reader) {
-    const std::string section = key.substr(0, key.find('.'));
+  const YAML::Node root = YAML::LoadFile(SDLQR_VEHICLE_FILE);
+  auto add = [&](const std::string& name, const std::string& key, const std::string& section, const YAML::Node& file,
+                 bool every_reader) {
     const auto found = readers().find(section);
-    const std::vector<std::string> exes = found == readers().end() ? allExecutables() : found->second;
+    if (found == readers().end()) {
+      ADD_FAILURE() << "no executable reads the declared section " << section << " (--print-config)";
+      return;
+    }
+    const std::vector<std::string>& exes = found->second;
     for (size_t i = 0; i < (every_reader ? exes.size() : 1); ++i) {
-      cases.push_back({safeName(key + "_" + what + "_" + shortName(exes[i])), key, exes[i], yaml, ""});
+      cases.push_back({sdlqr::testing::gtestSafe(name + "_" + shortName(exes[i])), key, exes[i], emit(file), ""});
     }
   };
-
-  for (const std::vector<std::string>& leaf_path : leaves) {
-    const std::string key = joined(leaf_path);
-    const YAML::Node original = nodeAt(YAML::Clone(root), leaf_path);
-    add("wrong_type", key, withValue(root, leaf_path, YAML::Load("[not, a, value]")), false);
-    if (original.IsSequence()) {
-      add("string", key, withValue(root, leaf_path, YAML::Node("not-a-list")), false);
-      YAML::Node shorter = YAML::Clone(original);
-      YAML::Node cut;
-      for (size_t i = 0; i + 1 < shorter.size(); ++i) cut.push_back(shorter[i]);
-      add("short_list", key, withValue(root, leaf_path, cut), false);
-      YAML::Node with_nan = YAML::Clone(original);
-      with_nan[0] = YAML::Load(".nan");
-      add("nan_element", key, withValue(root, leaf_path, with_nan), false);
-    } else if (isNumber(original)) {
-      add("string", key, withValue(root, leaf_path, YAML::Node("not-a-number")), false);
-      add("nan", key, withValue(root, leaf_path, YAML::Load(".nan")), false);
-      add("inf", key, withValue(root, leaf_path, YAML::Load(".inf")), false);
-      if (!signedFields().count(key)) add("negative", key, withValue(root, leaf_path, YAML::Node(-1.0)), false);
-    } else {
-      add("bad_word", key, withValue(root, leaf_path, YAML::Node("not-a-choice")), false);
+  for (const auto& [section, declaration] : sdlqr::params::declarations()) {
+    bool nan_everywhere = false;
+    for (const sdlqr::testing::DeclaredCase& c : sdlqr::testing::declaredCases(section, *declaration)) {
+      const bool unknown_key = c.name.size() > 12 && c.name.compare(c.name.size() - 12, 12, "_unknown_key") == 0;
+      // An unknown key, and one NaN per section, reach every process that reads the section.
+      const bool first_nan = !nan_everywhere && c.value.IsScalar() && c.value.Scalar() == ".nan";
+      nan_everywhere = nan_everywhere || first_nan;
+      add(c.name, c.key, section, sdlqr::testing::withCase(root, c), unknown_key || first_nan);
     }
   }
-  // An unknown key in every section and subsection, seen by every process that reads it.
-  for (const std::vector<std::string>& map_path : maps) {
-    YAML::Node copy = YAML::Clone(root);
-    nodeAt(copy, map_path)["no_such_key"] = 1;
-    std::vector<std::string> key_path = map_path;
-    key_path.push_back("no_such_key");
-    add("unknown_key", joined(key_path), emit(copy), true);
-  }
-  // One invalid field per section reaches every process that reads the section.
-  for (const auto& [section, exes] : readers()) {
-    for (const std::vector<std::string>& leaf_path : leaves) {
-      if (leaf_path.front() != section || !isNumber(nodeAt(YAML::Clone(root), leaf_path))) continue;
-      add("nan_every_reader", joined(leaf_path), withValue(root, leaf_path, YAML::Load(".nan")), true);
-      break;
-    }
-  }
-  for (const std::string& exe : allExecutables()) {
-    cases.push_back({safeName("missing_file_" + shortName(exe)), "/no/such/dir/vehicle.yaml", exe, "",
+  for (const std::string& exe : configReaders()) {
+    cases.push_back({sdlqr::testing::gtestSafe("missing_file_" + shortName(exe)), "/no/such/dir/vehicle.yaml", exe, "",
                      "/no/such/dir/vehicle.yaml"});
     // The error names the file (its name is the case name).
-    cases.push_back({safeName("unparsable_file_" + shortName(exe)), safeName("unparsable_file_" + shortName(exe)) + ".yaml",
-                     exe, "vehicle: [1, 2\nlqr: {\n", ""});
+    cases.push_back({sdlqr::testing::gtestSafe("unparsable_file_" + shortName(exe)),
+                     sdlqr::testing::gtestSafe("unparsable_file_" + shortName(exe)) + ".yaml", exe, "vehicle: [1, 2\nlqr: {\n", ""});
+    // An unknown top-level section.
+    YAML::Node unknown = YAML::Clone(root);
+    unknown["no_such_section"]["key"] = 1;
+    cases.push_back({sdlqr::testing::gtestSafe("unknown_section_" + shortName(exe)), "no_such_section", exe, emit(unknown), ""});
   }
   return cases;
 }
@@ -262,7 +205,7 @@ std::vector<Case> buildScenarioCases() {
     std::vector<std::string> leaves, maps;
     collectScenarioLeaves(root, "", leaves, maps);
     auto add = [&](const std::string& what, const std::string& key, const YAML::Node& changed) {
-      cases.push_back({safeName(std::string(file) + "_" + key + "_" + what), key, "bin/sdlqr-mission",
+      cases.push_back({sdlqr::testing::gtestSafe(std::string(file) + "_" + key + "_" + what), key, "bin/sdlqr-mission",
                        emit(changed), "", true});
     };
     for (const std::string& key : leaves) {
@@ -295,8 +238,6 @@ struct RunResult {
   std::string stderr_text;
 };
 
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
-
 bool namespacesAvailable() {
   static const bool available = std::system("unshare -n true > /dev/null 2>&1") == 0 ||
                                 std::system("unshare -rn true > /dev/null 2>&1") == 0;
@@ -306,12 +247,11 @@ bool namespacesAvailable() {
 RunResult run(const std::string& executable, const std::string& config_path, bool scenario,
               const std::string& stderr_path) {
   const std::string unshare = std::system("unshare -n true > /dev/null 2>&1") == 0 ? "unshare -n" : "unshare -rn";
-  std::string command = "timeout -s KILL 20 " + unshare + " " + quoted(std::string(SDLQR_BUILD_DIR) + "/" + executable);
+  std::string command = "timeout -s KILL 20 " + unshare + " ";
   if (scenario) {
-    command += " " + quoted(config_path);
+    command += quoted(std::string(SDLQR_BUILD_DIR) + "/" + executable) + " " + quoted(config_path);
   } else {
-    if (executable == "bin/sdlqr-mission") command += " " + quoted(SDLQR_SCENARIO_FILE);
-    command += " --config " + quoted(config_path);
+    command += commandOf(executable) + " --config " + quoted(config_path);
   }
   command += " > /dev/null 2> " + quoted(stderr_path);
   const int status = std::system(command.c_str());
@@ -359,6 +299,24 @@ void runAll(const std::vector<Case>& cases) {
 }
 
 TEST(ConfigValidation, EveryInvalidFieldOfTheVehicleFileIsRefusedByEveryReader) { runAll(buildCases()); }
+
+// --print-config shows the sections a process reads exactly as the shipped file prints them: one
+// declaration behind both.
+TEST(ConfigValidation, EveryProcessPrintsItsSectionsAsTheVehicleFileDoes) {
+  const std::map<std::string, std::string> shipped = sectionBlocks(sdlqr::params::defaultVehicleFileText());
+  for (const std::string& exe : configReaders()) {
+    const std::map<std::string, std::string> printed = sectionBlocks(printedConfig(exe));
+    EXPECT_FALSE(printed.empty()) << exe << " --print-config printed no section";
+    for (const auto& [section, block] : printed) {
+      ASSERT_TRUE(shipped.count(section)) << exe << " prints an undeclared section " << section;
+      EXPECT_EQ(block, shipped.at(section)) << exe << " --print-config, section " << section;
+    }
+  }
+  // Every declared section has a reader.
+  for (const auto& [section, declaration] : sdlqr::params::declarations()) {
+    EXPECT_TRUE(readers().count(section)) << "no executable reads " << section;
+  }
+}
 
 TEST(ConfigValidation, EveryInvalidFieldOfAScenarioIsRefusedByTheMission) { runAll(buildScenarioCases()); }
 

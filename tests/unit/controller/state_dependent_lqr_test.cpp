@@ -194,15 +194,18 @@ TEST(StateDependentLqr, LimitsFromParamsApplyAtTheNextTickAndInvalidOnesAreIgnor
   update.omega_max = 1.0;
   update.c_min = 3.0;
   update.c_max = 15.0;
-  controller.applyParams(update);
+  update.seq = 1;
+  EXPECT_EQ(controller.applyParams(update), ParamsOutcome::kApplied);
   ASSERT_TRUE(controller.onStateEstimate(estimateAt(200000, far), tick));
   EXPECT_NEAR(tick.command.body_rate.norm(), 1.0, 1e-9);
   EXPECT_TRUE(tick.command.saturated & 1);
 
   update.omega_max = -1.0;  // invalid: ignored as a whole
-  controller.applyParams(update);
+  update.seq = 2;
+  EXPECT_EQ(controller.applyParams(update), ParamsOutcome::kInvalid);
   ASSERT_TRUE(controller.onStateEstimate(estimateAt(300000, far), tick));
   EXPECT_NEAR(tick.command.body_rate.norm(), 1.0, 1e-9);
+  EXPECT_EQ(tick.reference.params_seq, 1);  // the refused update is not named
 }
 
 TEST(StateDependentLqr, WeightsWithoutAStabilizingGainAreRefusedAtConstruction) {

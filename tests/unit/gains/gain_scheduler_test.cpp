@@ -57,16 +57,22 @@ TEST(GainScheduler, ParamsChangeTheNextSolveAndInvalidOnesAreRefused) {
   update.field_mask = ParamsUpdate::kWeights;
   update.q_diag = LqrParams{}.q_diag * 4.0;
   update.r_diag = LqrParams{}.r_diag;
-  ASSERT_TRUE(scheduler.applyParams(update));
+  ASSERT_EQ(scheduler.applyParams(update), ParamsOutcome::kApplied);
   ASSERT_EQ(scheduler.solve(estimateAt(100000), after), SolveStatus::kOk);
   EXPECT_EQ(after.params_seq, 3);
   EXPECT_EQ(after.q_diag, update.q_diag);
   EXPECT_GT((after.K - before.K).norm(), 1e-3);
 
   ParamsUpdate bad = update;
+  bad.seq = 4;
+  bad.q_diag = LqrParams{}.q_diag;
   bad.r_diag[3] = 0.0;  // R not positive definite
-  EXPECT_FALSE(scheduler.applyParams(bad));
+  EXPECT_EQ(scheduler.applyParams(bad), ParamsOutcome::kInvalid);
+  EXPECT_EQ(scheduler.params().q_diag, update.q_diag);
   EXPECT_EQ(scheduler.params().r_diag, LqrParams{}.r_diag);
+  GainSet refused;
+  ASSERT_EQ(scheduler.solve(estimateAt(200000), refused), SolveStatus::kOk);
+  EXPECT_EQ(refused.params_seq, 3);  // the refused update is not named
 }
 
 TEST(GainScheduler, FailedSolveLeavesKZeroAndCounts) {

@@ -19,7 +19,8 @@ class LoopTest : public ::testing::Test {
  protected:
   VehicleParams vehicle;
   LowlevelParams params;
-  BodyrateLoop loop{vehicle, params};
+  ValidationLimits limits;
+  BodyrateLoop loop{vehicle, params, limits};
   int64_t utime = 1'000'000;
   int64_t seq = 0;
 
@@ -144,7 +145,11 @@ TEST_F(LoopTest, InvalidRateCommandsAreRejectedAndCounted) {
   tick();
   EXPECT_EQ(loop.setRateCommand(rate(Vec3(kNan, 0, 0), 9.81, utime)), RejectReason::kNonFinite);
   EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), kInf, utime)), RejectReason::kNonFinite);
-  EXPECT_EQ(loop.setRateCommand(rate(Vec3(0, -25.0, 0), 9.81, utime)), RejectReason::kOutOfRange);
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3(0, -(limits.max_body_rate + 1.0), 0), 9.81, utime)),
+            RejectReason::kOutOfRange);
+  // The bound is on |omega|, as in every validator: within it on each axis is not enough.
+  const double per_axis = 0.8 * limits.max_body_rate;
+  EXPECT_EQ(loop.setRateCommand(rate(Vec3(per_axis, per_axis, 0), 9.81, utime)), RejectReason::kOutOfRange);
   EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), -0.1, utime)), RejectReason::kOutOfRange);
   const double max_thrust = 4.0 * vehicle.max_rotor_thrust / vehicle.mass;
   EXPECT_EQ(loop.setRateCommand(rate(Vec3::Zero(), max_thrust + 0.1, utime)), RejectReason::kOutOfRange);
@@ -158,7 +163,7 @@ TEST_F(LoopTest, InvalidRateCommandsAreRejectedAndCounted) {
 
   EXPECT_EQ(rateRejected(RejectReason::kNoClock), 1);
   EXPECT_EQ(rateRejected(RejectReason::kNonFinite), 2);
-  EXPECT_EQ(rateRejected(RejectReason::kOutOfRange), 3);
+  EXPECT_EQ(rateRejected(RejectReason::kOutOfRange), 4);
   EXPECT_EQ(rateRejected(RejectReason::kTimeFuture), 2);
   EXPECT_EQ(rateRejected(RejectReason::kStale), 1);
   EXPECT_EQ(rateRejected(RejectReason::kTimeBackwards), 1);
@@ -282,10 +287,26 @@ TEST_F(LoopTest, GarbageInputsNeverProduceNonFiniteOrOutOfRangeThrust) {
 TEST(LoopConstruction, RejectsInvalidParameters) {
   LowlevelParams params;
   params.idle_thrust = 2.0;  // above the rotor's maximum
-  EXPECT_THROW(BodyrateLoop(VehicleParams(), params), std::invalid_argument);
+  const ValidationLimits limits;
+  EXPECT_THROW(BodyrateLoop(VehicleParams(), params, limits), std::invalid_argument);
   VehicleParams vehicle;
   vehicle.mass = -1.0;
-  EXPECT_THROW(BodyrateLoop(vehicle, LowlevelParams()), std::invalid_argument);
+  EXPECT_THROW(BodyrateLoop(vehicle, LowlevelParams(), limits), std::invalid_argument);
+  EXPECT_NO_THROW(BodyrateLoop(VehicleParams(), LowlevelParams(), limits));
+}
+
+TEST(LoopConstruction, TheFailsafeStaysWithinTheStacksBodyRateLimit) {
+  LowlevelParams params;
+  ValidationLimits limits;
+  limits.max_body_rate = 0.5 * params.failsafe.max_rate;
+  try {
+    BodyrateLoop loop(VehicleParams(), params, limits);
+    ADD_FAILURE() << "a failsafe levelling faster than the accepted body rate was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("lowlevel.failsafe.max_rate"), std::string::npos) << e.what();
+  }
+  limits.max_body_rate = params.failsafe.max_rate;
+  EXPECT_NO_THROW(BodyrateLoop(VehicleParams(), params, limits));
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ class FlightHarness {
  public:
   explicit FlightHarness(const ImuErrors& imu = ImuErrors(), const lowlevel::LowlevelParams& params = lowlevel::LowlevelParams(),
                          const VehicleParams& vehicle = VehicleParams())
-      : vehicle(vehicle), loop(vehicle, params, kGravity), plant(vehicle, kGravity, imu) {}
+      : vehicle(vehicle), loop(vehicle, params, ValidationLimits(), kGravity), plant(vehicle, kGravity, imu) {}
 
   // One IMU period: the plant moves, the loop sees the sample, the rotors get the command.
   const MotorCommand& tick() {

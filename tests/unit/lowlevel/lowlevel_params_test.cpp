@@ -70,7 +70,25 @@ TEST(LowlevelParams, ErrorsNameTheFullKey) {
   EXPECT_EQ(errorKey("lowlevel:\n  failsafe:\n    impact_rest_time: 1.0\n"), "lowlevel.failsafe.impact_rest_time");
   EXPECT_EQ(errorKey("lowlevel:\n  ground_detector:\n    landed_thrust_ratio: 1.2\n"),
             "lowlevel.ground_detector.landed_thrust_ratio");
-  EXPECT_EQ(errorKey("lowlevel:\n  input_limits:\n    max_body_rate: .nan\n"), "lowlevel.input_limits.max_body_rate");
+  EXPECT_EQ(errorKey("lowlevel:\n  input_limits:\n    max_gyro: .nan\n"), "lowlevel.input_limits.max_gyro");
+}
+
+// The RATE_CMD body-rate bound is the stack's one (validation.max_body_rate), not a lowlevel key.
+TEST(LowlevelParams, TheBodyRateBoundIsNotALowlevelKey) {
+  try {
+    loadText("lowlevel:\n  input_limits:\n    max_body_rate: 20\n");
+    ADD_FAILURE() << "lowlevel.input_limits.max_body_rate was accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()), "lowlevel.input_limits.max_body_rate: unknown key");
+  }
+}
+
+TEST(LowlevelParams, TheFailsafeMustStayWithinTheBodyRateBound) {
+  LowlevelParams params;
+  ValidationLimits limits;
+  EXPECT_EQ(params.invalidReasonFor(limits), "");
+  limits.max_body_rate = params.failsafe.max_rate - 0.1;
+  EXPECT_EQ(params.invalidReasonFor(limits).rfind("failsafe.max_rate:", 0), 0u);
 }
 
 TEST(LowlevelParams, IdleThrustMustSuitTheAirframe) {

@@ -2,21 +2,6 @@
 
 namespace sdlqr::closedloop {
 
-StackConfig StackConfig::load(const std::string& vehicle_file) {
-  const ConfigReader root = loadVehicleConfig(vehicle_file);
-  StackConfig c;
-  c.vehicle = VehicleParams::load(root.child("vehicle"));
-  c.lqr = LqrParams::load(root.child("lqr"));
-  c.sim = sim::SimParams::load(root.child("sim"));
-  c.estimator = estimator::EstimatorParams::load(root.child("estimator"));
-  c.lowlevel = lowlevel::LowlevelParams::load(root.child("lowlevel"));
-  c.controller = controller::ControllerParams::load(root.child("controller"));
-  c.gains = gains::GainsParams::load(root.child("gains"));
-  c.trajectory = trajectory::TrajectoryParams::load(root.child("trajectory"));
-  c.faults = FaultParams::load(root.child("faults"));
-  return c;
-}
-
 namespace {
 
 sim::SimParams withSeed(sim::SimParams params, long long seed) {
@@ -37,9 +22,9 @@ ClosedLoop::ClosedLoop(const StackConfig& config, const mission::Scenario& scena
     : record_(record),
       sim_(config.vehicle, withSeed(config.sim, scenario.seed)),
       estimator_(config.estimator),
-      lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity, config.faults, config.limits),
-      controller_(config.lqr, config.controller, config.faults, config.limits),
-      gains_(config.lqr, config.gains, config.faults, config.limits),
+      lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity, config.faults, config.validation),
+      controller_(config.lqr, config.controller, config.faults, config.validation),
+      gains_(config.lqr, config.gains, config.faults, config.validation),
       mission_(scenario, config.trajectory, config.lqr, missionOptions(command_resend_s)) {}
 
 bool ClosedLoop::step() {

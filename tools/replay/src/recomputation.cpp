@@ -42,9 +42,9 @@ const estimator::EstimatorParams& checked(const ReplayParams& p) {
 Recomputation::Recomputation(const ReplayParams& params, const RecordedFlight& flight)
     : flight_(flight),
       estimator_(checked(params)),
-      gains_(params.lqr, params.gains, params.faults, params.limits),
+      gains_(params.lqr, params.gains, params.faults, params.validation),
       solve_period_us_(static_cast<int64_t>(1e6 / params.gains.rate_hz + 0.5)),
-      controller_(params.lqr, params.controller, params.faults, params.limits),
+      controller_(params.lqr, params.controller, params.faults, params.validation),
       tick_period_us_(static_cast<int64_t>(1e6 / params.controller.rate_hz + 0.5)),
       command_delivered_(flight.command.size(), false),
       recorded_gains_(indexBySeq(flight.gains)),

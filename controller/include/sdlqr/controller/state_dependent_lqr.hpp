@@ -2,7 +2,7 @@
 // The 100 Hz controller process logic (paper §II-C, §III-B): on each tick of simulation time it
 // takes the newest estimate, the reference of the tick and the newest valid K, and computes the
 // body-rate and thrust command. K comes from the gain solver at 10 Hz; when it goes stale the last
-// valid K is kept and flagged, and after a timeout a hover K computed here takes over (DESIGN §7).
+// valid K is kept and flagged, and after a timeout a hover K computed here takes over.
 
 #include "sdlqr/messages/messages.hpp"
 #include "sdlqr/math/lqr_params.hpp"
@@ -34,9 +34,11 @@ class StateDependentLqr {
   void handleCommand(const Command& command);
   // Starts tracking (copies the samples: call on receipt). Empty string when accepted, else why not.
   std::string setTrajectory(const Trajectory& trajectory);
-  // Weights (for the fallback K) and limits apply from the next tick; tracking switches the
-  // scheme without losing the place.
-  void applyParams(const ParamsUpdate& update);
+  // Offers a PARAMS update under the rule the gain solver shares (RuntimeLqrParams::apply).
+  // Applied weights (for the fallback K) and limits count from the next tick, tracking switches
+  // the scheme without losing the place. Weights that admit no stabilizing hover K are kInvalid;
+  // anything but kApplied changes nothing.
+  ParamsOutcome applyParams(const ParamsUpdate& update);
 
   struct Tick {
     RateCommand command;
@@ -57,7 +59,7 @@ class StateDependentLqr {
  private:
   const GainMatrix& chooseGain(int64_t now_utime, GainsFreshness& freshness, int64_t& gains_seq);
 
-  LqrParams lqr_;
+  RuntimeLqrParams lqr_;
   ControllerParams params_;
   ReferenceGenerator references_;
   GainMatrix fallback_K_;
@@ -71,7 +73,6 @@ class StateDependentLqr {
   int64_t reference_seq_ = 0;
   // Inputs named in each REFERENCE, so a replay can check it fed the tick the same ones.
   int64_t command_seq_handled_ = -1;
-  int64_t params_seq_handled_ = -1;
   ControllerStatus status_;
 };
 

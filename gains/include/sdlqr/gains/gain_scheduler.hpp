@@ -19,9 +19,9 @@ class GainScheduler {
     reference_input_ = reference.u;
     reference_seq_ = reference.seq;
   }
-  // Applies weights and limits from the next solve. Returns false (and changes nothing) when the
-  // update would make the parameters invalid.
-  bool applyParams(const ParamsUpdate& update);
+  // Offers a PARAMS update to the LQR parameters under the rule the controller shares
+  // (RuntimeLqrParams::apply); what is applied counts from the next solve.
+  ParamsOutcome applyParams(const ParamsUpdate& update) { return lqr_.apply(update); }
 
   // True when this estimate is the first at or after the next grid time of the solve rate.
   bool due(const StateEstimate& estimate);
@@ -31,16 +31,15 @@ class GainScheduler {
   // solve_us. Never fills a non-finite K: on failure status != kOk and K is left zero.
   SolveStatus solve(const StateEstimate& estimate, GainSet& out);
 
-  const LqrParams& params() const { return params_; }
+  const LqrParams& params() const { return lqr_.params(); }
   int64_t solves() const { return solves_; }
   int64_t failures() const { return failures_; }
 
  private:
-  LqrParams params_;
+  RuntimeLqrParams lqr_;
   int64_t period_utime_;
   int64_t next_utime_ = 0;
   Input reference_input_;
-  int64_t params_seq_ = -1;
   int64_t reference_seq_ = -1;
   int64_t seq_ = 0;
   int64_t solves_ = 0;

@@ -4,16 +4,19 @@
 
 #include <string>
 
-#include "sdlqr/config/config.hpp"
+#include "sdlqr/config/param_table.hpp"
 
 namespace sdlqr::gains {
 
+// Declared (key, unit, default, range, help) in GainsParams::declaration() (gains_params.cpp).
 struct GainsParams {
-  double rate_hz = 10.0;           // [Hz] solve rate in simulation time (paper: 10 Hz)
-  double state_timeout_s = 0.5;    // [s] no STATE_EST for this long (wall time): report DEGRADED
+  double rate_hz;
+  double state_timeout_s;
 
-  static GainsParams load(const ConfigReader& gains);
-  std::string invalidReason() const;
+  GainsParams();
+  static const ParamTable<GainsParams>& declaration();
+  static GainsParams load(const ConfigReader& gains) { return declaration().load(gains); }
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
 };
 

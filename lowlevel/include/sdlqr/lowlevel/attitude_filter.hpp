@@ -10,20 +10,23 @@
 
 #include <string>
 
-#include "sdlqr/config/config.hpp"
+#include "sdlqr/config/param_table.hpp"
 #include "sdlqr/math/types.hpp"
 
 namespace sdlqr::lowlevel {
 
+// Declared (key, unit, default, range, help) in AttitudeFilterParams::declaration() (attitude_filter.cpp).
 struct AttitudeFilterParams {
-  double flight_gain = 0.2;        // [1/s] accelerometer levelling rate in flight
-  double ground_gain = 2.0;        // [1/s] accelerometer levelling rate at rest on the ground
-  double accel_gate = 0.15;        // [-] levelling only while | |f| - g | < accel_gate * g
-  double bias_time_constant = 0.5; // [s] learning time of gyro bias and vertical offset at rest
-  double velocity_leak_time = 3.0; // [s] leak of the vertical velocity towards 0 in normal flight
+  double flight_gain;
+  double ground_gain;
+  double accel_gate;
+  double bias_time_constant;
+  double velocity_leak_time;
 
-  static AttitudeFilterParams load(const ConfigReader& reader);
-  std::string invalidReason() const;
+  AttitudeFilterParams();
+  static const ParamTable<AttitudeFilterParams>& declaration();
+  static AttitudeFilterParams load(const ConfigReader& reader) { return declaration().load(reader); }
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
 };
 

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 
+#include "sdlqr/health/validate.hpp"
 #include "sdlqr/messages/messages.hpp"
 #include "sdlqr/math/model.hpp"
 #include "sdlqr/math/vehicle.hpp"
@@ -60,15 +61,17 @@ struct LowlevelStatus {
 
 class BodyrateLoop {
  public:
-  // Throws std::invalid_argument on invalid parameters.
-  BodyrateLoop(const VehicleParams& vehicle, const LowlevelParams& params, double gravity = kDefaultGravity);
+  // Throws std::invalid_argument on invalid parameters. `limits` gives the stack's body-rate bound
+  // (RATE_CMD |omega|, and the failsafe's levelling rate must stay within it).
+  BodyrateLoop(const VehicleParams& vehicle, const LowlevelParams& params, const ValidationLimits& limits,
+               double gravity = kDefaultGravity);
 
   // Validates and keeps the command (latest wins). Returns why it was refused, kNone if kept.
   RejectReason setRateCommand(const RateCommand& command);
   // ARM, DISARM, TAKEOFF (arms), LAND (disarms when idle on the ground); GOTO is for the
   // controller. Returns false when refused (arming before the first IMU sample).
   bool handleCommand(const Command& command);
-  // Run-time mass [kg] (PARAMS FIELD_MASS). Refused unless finite, > 0 and liftable.
+  // Run-time mass [kg] (PARAMS FIELD_MASS). Refused unless VehicleParams::massInvalidReason accepts it.
   bool setMass(double mass);
 
   // One loop iteration. A rejected sample (see lastImuReject()) leaves the loop untouched and
@@ -93,6 +96,7 @@ class BodyrateLoop {
   VehicleParams vehicle_;
   LowlevelParams params_;
   double gravity_;
+  double max_body_rate_;  // [rad/s]
   double mass_;
   Mat3 inertia_;
 

@@ -1,5 +1,5 @@
 #pragma once
-// What the bodyrate loop flies when RATE_CMD goes silent (DESIGN §7): level the vehicle on the
+// What the bodyrate loop flies when RATE_CMD goes silent: level the vehicle on the
 // IMU-only attitude, hold yaw rate at zero, descend at a fixed rate on the leaky vertical
 // velocity with thrust around hover, and report touchdown so the loop can disarm.
 // Touchdown: at rest while a descent is commanded but the velocity estimate says the vehicle is
@@ -7,28 +7,29 @@
 
 #include <string>
 
-#include "sdlqr/config/config.hpp"
+#include "sdlqr/config/param_table.hpp"
 #include "sdlqr/math/types.hpp"
 #include "sdlqr/lowlevel/ground_detector.hpp"
 
 namespace sdlqr::lowlevel {
 
+// Declared (key, unit, default, range, help) in FailsafeParams::declaration() (failsafe.cpp).
 struct FailsafeParams {
-  double descent_rate = 0.5;         // [m/s] commanded sink rate
-  double velocity_gain = 2.0;        // [1/s] thrust [m/s^2] per m/s of vertical velocity error
-  // The integral absorbs a wrong hover thrust (battery sag, a learned value still high after a
-  // climb), which a proportional term alone would turn into a hover instead of a descent.
-  double velocity_integral_gain = 1.0;  // [1/s^2] thrust [m/s^2] per m of integrated error
-  double attitude_gain = 5.0;        // [1/s] levelling body rate per radian of tilt
-  double max_rate = 3.0;             // [rad/s] bound on the levelling body rate
-  double thrust_min_ratio = 0.6;     // [-] thrust bounds as multiples of the hover thrust
-  double thrust_max_ratio = 1.5;     // [-]
-  double velocity_leak_time = 20.0;  // [s] vertical velocity leak while descending
-  double touchdown_time = 0.3;       // [s] rest with no descent before disarming
-  double impact_rest_time = 0.1;     // [s] the same after an impact spike
+  double descent_rate;
+  double velocity_gain;
+  double velocity_integral_gain;
+  double attitude_gain;
+  double max_rate;
+  double thrust_min_ratio;
+  double thrust_max_ratio;
+  double velocity_leak_time;
+  double touchdown_time;
+  double impact_rest_time;
 
-  static FailsafeParams load(const ConfigReader& reader);
-  std::string invalidReason() const;
+  FailsafeParams();
+  static const ParamTable<FailsafeParams>& declaration();
+  static FailsafeParams load(const ConfigReader& reader) { return declaration().load(reader); }
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
 };
 

@@ -7,21 +7,24 @@
 
 #include <string>
 
-#include "sdlqr/config/config.hpp"
+#include "sdlqr/config/param_table.hpp"
 #include "sdlqr/math/types.hpp"
 
 namespace sdlqr::lowlevel {
 
+// Declared (key, unit, default, range, help) in GroundDetectorParams::declaration() (ground_detector.cpp).
 struct GroundDetectorParams {
-  double filter_cutoff_hz = 5.0;      // [Hz] low-pass on |specific force| and |rotation rate|
-  double accel_tolerance = 0.5;       // [m/s^2] at rest when | |f| - g | is below this
-  double gyro_tolerance = 0.2;        // [rad/s] and |omega| below this
-  double impact_threshold = 5.0;      // [m/s^2] body-z specific force above the rotors' share
-  double landed_thrust_ratio = 0.8;   // [-] "thrust below hover": command < ratio * hover thrust
-  double landed_time = 1.0;           // [s] at rest with thrust below hover before auto-disarm
+  double filter_cutoff_hz;
+  double accel_tolerance;
+  double gyro_tolerance;
+  double impact_threshold;
+  double landed_thrust_ratio;
+  double landed_time;
 
-  static GroundDetectorParams load(const ConfigReader& reader);
-  std::string invalidReason() const;
+  GroundDetectorParams();
+  static const ParamTable<GroundDetectorParams>& declaration();
+  static GroundDetectorParams load(const ConfigReader& reader) { return declaration().load(reader); }
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
 };
 

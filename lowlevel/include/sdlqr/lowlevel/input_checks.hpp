@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include "sdlqr/config/config.hpp"
+#include "sdlqr/config/param_table.hpp"
 #include "sdlqr/health/reject_reason.hpp"
 #include "sdlqr/messages/messages.hpp"
 
@@ -14,15 +14,18 @@ namespace sdlqr::lowlevel {
 
 inline constexpr int64_t kNoTime = std::numeric_limits<int64_t>::min();
 
+// Declared (key, unit, default, range, help) in InputLimits::declaration() (input_checks.cpp).
+// The RATE_CMD body-rate bound is the stack's one, ValidationLimits::max_body_rate.
 struct InputLimits {
-  double max_body_rate = 20.0;     // [rad/s] per axis: beyond this RATE_CMD is not physical
-  double max_command_lead = 0.1;   // [s] RATE_CMD utime allowed ahead of the latest IMU time
-  double max_gyro = 35.0;          // [rad/s] per axis: beyond a 2000 deg/s gyro's range
-  double max_accel = 160.0;        // [m/s^2] per axis: beyond a 16 g accelerometer's range
-  double max_imu_gap = 1.0;        // [s] a sample further ahead than this is a broken clock
+  double max_command_lead;
+  double max_gyro;
+  double max_accel;
+  double max_imu_gap;
 
-  static InputLimits load(const ConfigReader& reader);
-  std::string invalidReason() const;
+  InputLimits();
+  static const ParamTable<InputLimits>& declaration();
+  static InputLimits load(const ConfigReader& reader) { return declaration().load(reader); }
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
 };
 
@@ -35,9 +38,10 @@ RejectReason checkImu(const ImuSample& sample, const InputLimits& limits, int64_
 // kTimeBackwards (older than the last accepted command), kNoClock (no IMU sample yet),
 // kTimeFuture (further ahead of the IMU clock than max_command_lead), kStale (older than the
 // RATE_CMD timeout at arrival).
-// max_thrust [m/s^2]; imu_utime: latest accepted IMU time (kNoTime: none yet); last_utime: utime
-// of the last accepted command (kNoTime: none); max_age [s]: the RATE_CMD timeout.
-RejectReason checkRateCommand(const RateCommand& command, const InputLimits& limits, double max_thrust,
-                                   int64_t imu_utime, int64_t last_utime, double max_age);
+// max_body_rate [rad/s]: bound on |omega| (ValidationLimits::max_body_rate); max_thrust [m/s^2];
+// imu_utime: latest accepted IMU time (kNoTime: none yet); last_utime: utime of the last accepted
+// command (kNoTime: none); max_age [s]: the RATE_CMD timeout.
+RejectReason checkRateCommand(const RateCommand& command, const InputLimits& limits, double max_body_rate,
+                              double max_thrust, int64_t imu_utime, int64_t last_utime, double max_age);
 
 }  // namespace sdlqr::lowlevel

@@ -4,7 +4,8 @@
 
 #include <string>
 
-#include "sdlqr/config/config.hpp"
+#include "sdlqr/config/param_table.hpp"
+#include "sdlqr/health/validate.hpp"
 #include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/lowlevel/attitude_filter.hpp"
 #include "sdlqr/lowlevel/failsafe.hpp"
@@ -15,12 +16,14 @@
 
 namespace sdlqr::lowlevel {
 
+// Declared (key, unit, default, range, help) in LowlevelParams::declaration() (lowlevel_params.cpp);
+// each nested struct in its own file.
 struct LowlevelParams {
-  double idle_thrust = 0.03;                 // [N] per rotor while armed: rotors never stop in flight
-  double rate_cmd_timeout = 0.1;             // [s] of IMU time without a valid RATE_CMD -> failsafe
-  double dt_min = 0.000125;                  // [s] clamp of the IMU sample interval (PX4 does the same)
-  double dt_max = 0.02;                      // [s]
-  double hover_thrust_time_constant = 2.0;   // [s] learning the hover thrust from flown commands
+  double idle_thrust;
+  double rate_cmd_timeout;
+  double dt_min;
+  double dt_max;
+  double hover_thrust_time_constant;
 
   RateControlParams rate_control;
   MixerParams mixer;
@@ -29,13 +32,17 @@ struct LowlevelParams {
   FailsafeParams failsafe;
   InputLimits input_limits;
 
+  LowlevelParams();
+  static const ParamTable<LowlevelParams>& declaration();
   // Reads the given `lowlevel` mapping; throws ConfigError naming the key on a wrong value.
-  static LowlevelParams load(const ConfigReader& lowlevel);
+  static LowlevelParams load(const ConfigReader& lowlevel) { return declaration().load(lowlevel); }
   // Empty when valid, else "key: reason" (nested keys dotted: "failsafe.descent_rate: ...").
-  std::string invalidReason() const;
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
   // Checks against the airframe: the idle thrust must fit the rotors and not lift the vehicle.
   std::string invalidReasonFor(const VehicleParams& vehicle, double gravity) const;
+  // Checks against the stack's message limits: the failsafe stays within the body-rate bound.
+  std::string invalidReasonFor(const ValidationLimits& limits) const;
 };
 
 }  // namespace sdlqr::lowlevel

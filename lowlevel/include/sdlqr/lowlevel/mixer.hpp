@@ -11,19 +11,20 @@
 
 #include <string>
 
-#include "sdlqr/config/config.hpp"
+#include "sdlqr/config/param_table.hpp"
 #include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/lowlevel/rate_control.hpp"
 
 namespace sdlqr::lowlevel {
 
+// Declared (key, unit, default, range, help) in MixerParams::declaration() (mixer.cpp).
 struct MixerParams {
-  // Collective thrust yaw may take away (or add), as a fraction of the demanded collective:
-  // yaw matters less than altitude, but at zero share a vehicle at full thrust could not turn.
-  double yaw_collective_share = 0.15;  // [-]
+  double yaw_collective_share;
 
-  static MixerParams load(const ConfigReader& reader);
-  std::string invalidReason() const;
+  MixerParams();
+  static const ParamTable<MixerParams>& declaration();
+  static MixerParams load(const ConfigReader& reader) { return declaration().load(reader); }
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
 };
 

@@ -8,26 +8,26 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "sdlqr/config/config.hpp"
+#include "sdlqr/config/param_table.hpp"
 #include "sdlqr/math/types.hpp"
 
 namespace sdlqr::lowlevel {
 
 using AxisFlags = Eigen::Array<bool, 3, 1>;
 
+// Declared (key, unit, default, range, help) in RateControlParams::declaration() (rate_control.cpp).
 struct RateControlParams {
-  // Tuned on a rigid body with the default inertia and a 30 ms motor lag: a 1 rad/s roll or
-  // pitch step settles to 2 % in about 65 ms with < 1 % overshoot (tests/unit/lowlevel).
-  // Yaw is slower on purpose: rotor drag gives it a tenth of the roll authority.
-  Vec3 p = Vec3(120.0, 120.0, 12.0);            // [1/s] rad/s^2 per rad/s of rate error
-  Vec3 i = Vec3(30.0, 30.0, 1.0);               // [1/s^2] rad/s^2 per rad of integrated error
-  Vec3 d = Vec3(2.0, 2.0, 0.0);                 // [-] rad/s^2 per rad/s^2 of measured rate change
-  Vec3 integral_limit = Vec3(30.0, 30.0, 10.0); // [rad/s^2] bound of the integral term
-  double d_cutoff_hz = 40.0;                    // [Hz] low-pass on the derivative of the gyro
-  bool gyroscopic_feedforward = true;           // add omega x J omega to the torque
+  Vec3 p;
+  Vec3 i;
+  Vec3 d;
+  Vec3 integral_limit;
+  double d_cutoff_hz;
+  bool gyroscopic_feedforward;
 
-  static RateControlParams load(const ConfigReader& reader);
-  std::string invalidReason() const;
+  RateControlParams();
+  static const ParamTable<RateControlParams>& declaration();
+  static RateControlParams load(const ConfigReader& reader) { return declaration().load(reader); }
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
 };
 

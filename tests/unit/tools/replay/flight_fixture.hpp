@@ -22,7 +22,7 @@ inline ReplayParams paramsOf(const closedloop::StackConfig& c) {
   p.controller = c.controller;
   p.gains = c.gains;
   p.faults = c.faults;
-  p.limits = c.limits;
+  p.validation = c.validation;
   return p;
 }
 

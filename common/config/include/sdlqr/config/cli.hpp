@@ -46,12 +46,13 @@ class ArgParser {
   std::string positional_metavar_;
 };
 
-// Standard options of every flight process (DESIGN §2).
+// Standard options of every flight process.
 struct ProcessOptions {
-  std::string config_path;  // vehicle YAML
-  std::string lcm_url;      // empty: $LCM_DEFAULT_URL or LCM's default
-  std::string vehicle;      // channel prefix
+  std::string config_path;    // vehicle YAML
+  std::string lcm_url;        // empty: $LCM_DEFAULT_URL or LCM's default
+  std::string vehicle;        // channel prefix
   std::string bus_layout = "split";  // "single" or "split" (sdlqr/bus/bus_layout.hpp)
+  bool print_config = false;  // print the sections read (printProcessConfig) and exit 0
 };
 void addProcessOptions(ArgParser& parser, ProcessOptions* options);
 // --bus-layout alone, for the tools that take --lcm-url without the rest of addProcessOptions.

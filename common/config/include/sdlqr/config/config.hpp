@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -29,8 +30,11 @@ YAML::Node loadYamlFile(const std::string& path);
 class ConfigReader;
 
 // The vehicle file of every process (config/*.yaml): an empty path gives built-in defaults; a
-// top-level section not in the known list is an error (a typo would otherwise be ignored).
+// top-level section not in vehicleFileSections() is an error (a typo would otherwise be ignored).
 ConfigReader loadVehicleConfig(const std::string& path);
+// The top-level sections of a vehicle file, in the order the printed defaults list them (each
+// one's keys are declared by its parameter struct; tools/params lists the struct of each).
+const std::vector<std::string>& vehicleFileSections();
 
 // A view of one mapping in the document, remembering its dotted path for messages.
 class ConfigReader {
@@ -40,8 +44,10 @@ class ConfigReader {
   bool has(const std::string& key) const;
   // The sub-mapping `key`; an absent key gives an empty reader (all defaults kept).
   ConfigReader child(const std::string& key) const;
-  // Rejects keys not in `allowed` (typos otherwise pass silently as "default kept").
+  // Rejects keys not in `allowed` (typos otherwise pass silently as "default kept"); the error
+  // suggests the allowed key a typo most likely meant.
   void allowOnly(std::initializer_list<const char*> allowed) const;
+  void allowOnly(const std::vector<std::string>& allowed) const;
 
   // Each read leaves `out` untouched when the key is absent.
   void read(const std::string& key, double& out) const;
@@ -62,5 +68,9 @@ class ConfigReader {
   YAML::Node node_;
   std::string path_;
 };
+
+// Turns an invalidReason() text "key: reason" (key relative to `reader`) into a ConfigError
+// naming the full key path; nothing when `reason` is empty.
+void throwIfInvalid(const ConfigReader& reader, const std::string& reason);
 
 }  // namespace sdlqr

@@ -1,24 +1,43 @@
 #pragma once
-// Message validation before any algorithm sees a message (DESIGN §7: "malformed or out-of-range
+// Message validation before any algorithm sees a message ("malformed or out-of-range
 // message: dropped, counted, never crashes, never reaches the controller"). Pure checks on the
 // plain structs; each rejection has a reason (reject_reason.hpp) that processes count in HEARTBEAT.
 
+#include <string>
+
+#include "sdlqr/config/param_table.hpp"
 #include "sdlqr/health/reject_reason.hpp"
+#include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr {
 
 
-// Limits a validator cannot know from the message alone.
+// Limits a validator cannot know from the message alone: the `validation:` section of the vehicle
+// file, read by every process that validates messages. Declared (key, unit, default, range, help)
+// in ValidationLimits::declaration() (validate.cpp). max_body_rate is the one body-rate limit of
+// the stack: estimates, references, trajectories, RATE_CMD in the bodyrate loop, a PARAMS
+// omega_max and the failsafe's levelling rate are all held to it.
 struct ValidationLimits {
-  double quaternion_norm_tolerance = 0.05;  // [-] accept 0.95 <= |q| <= 1.05
-  double max_position = 1000.0;             // [m] |p| per axis
-  double max_velocity = 50.0;               // [m/s]
-  double max_body_rate = 35.0;              // [rad/s] (2000 deg/s, a gyro's range)
-  double max_thrust = 60.0;                 // [m/s^2] mass-normalized
-  double max_gain = 1e4;                    // [-] |K_ij|
-  int max_trajectory_samples = 100000;
+  double quaternion_norm_tolerance;
+  double max_position;
+  double max_velocity;
+  double max_body_rate;
+  double max_thrust;
+  double max_gain;
+  double max_weight;
+  int max_trajectory_samples;
+
+  ValidationLimits();
+  static const ParamTable<ValidationLimits>& declaration();
+  static ValidationLimits load(const ConfigReader& validation) { return declaration().load(validation); }
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
+  bool valid() const { return invalidReason().empty(); }
 };
+
+// The LQR limits of a vehicle file against the message limits, as validate(ParamsUpdate) holds a
+// PARAMS update to them: "omega_max: ..." or "c_max: ..." (keys of `lqr`), empty when they fit.
+std::string lqrLimitsInvalidReason(const LqrParams& lqr, const ValidationLimits& limits);
 
 RejectReason validate(const StateEstimate& m, const ValidationLimits& limits);
 RejectReason validate(const GainSet& m, const ValidationLimits& limits);
@@ -101,6 +120,17 @@ template <class Msg>
 RejectReason admitOrdered(const Msg& m, const ValidationLimits& limits, OrderGate& order, int64_t now_utime) {
   const RejectReason reason = validate(m, limits);
   return reason != RejectReason::kNone ? reason : order.offer(m.utime, m.seq, now_utime);
+}
+
+// What applying a PARAMS update to the LQR parameters (RuntimeLqrParams::apply) says, as a
+// rejection: a re-send or replay is kTimeBackwards, values the LQR refuses are kRefused.
+inline RejectReason rejectionOf(ParamsOutcome outcome) {
+  switch (outcome) {
+    case ParamsOutcome::kApplied: return RejectReason::kNone;
+    case ParamsOutcome::kNotNewer: return RejectReason::kTimeBackwards;
+    case ParamsOutcome::kInvalid: break;
+  }
+  return RejectReason::kRefused;
 }
 
 // The admission of a process's clock stream (STATE_EST in the controller and the gain solver).

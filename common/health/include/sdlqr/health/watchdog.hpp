@@ -1,5 +1,5 @@
 #pragma once
-// Stream watchdogs (DESIGN §7): how long since the last valid message of a stream, and whether
+// Stream watchdogs: how long since the last valid message of a stream, and whether
 // that is longer than its timeout. Clock-free: the caller passes the time (a main passes wall
 // time, because a silent stream is exactly when no message brings simulation time).
 // FaultParams is the `faults:` section of the vehicle file: the thresholds that no other
@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <string>
 
-#include "sdlqr/config/config.hpp"
+#include "sdlqr/config/param_table.hpp"
 
 namespace sdlqr {
 
@@ -33,14 +33,17 @@ class Watchdog {
   int64_t timeouts_ = 0;
 };
 
+// Declared (key, unit, default, range, help) in FaultParams::declaration() (watchdog.cpp).
 struct FaultParams {
-  double controller_state_timeout_s = 0.05;  // [s] wall time without a valid STATE_EST: controller FAILSAFE
-  double lowlevel_imu_timeout_s = 0.02;      // [s] wall time without a valid IMU sample: lowlevel FAILSAFE
-  double state_max_jump_s = 0.5;             // [s] larger forward jumps of STATE_EST time need confirming
-  int state_jump_confirmations = 5;          // [-] consecutive consistent estimates that confirm a jump
+  double controller_state_timeout_s;
+  double lowlevel_imu_timeout_s;
+  double state_max_jump_s;
+  int state_jump_confirmations;
 
-  static FaultParams load(const ConfigReader& faults);
-  std::string invalidReason() const;
+  FaultParams();
+  static const ParamTable<FaultParams>& declaration();
+  static FaultParams load(const ConfigReader& faults) { return declaration().load(faults); }
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
 };
 

@@ -1,38 +1,76 @@
 #pragma once
 // Weights and limits of the state-dependent LQR (paper §III-B defaults), loaded from the
-// `lqr:` section of a vehicle file and changeable at run time through PARAMS.
+// `lqr:` section of a vehicle file and changeable at run time through PARAMS (RuntimeLqrParams).
 
+#include <cstdint>
 #include <string>
 
-#include "sdlqr/config/config.hpp"
+#include "sdlqr/config/param_table.hpp"
 #include "sdlqr/math/model.hpp"
 #include "sdlqr/math/types.hpp"
+#include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr {
 
 enum class LqrMethod { kTangent, kIterative };
 
+// Each member is declared once (key, unit, default, range, help) in LqrParams::declaration()
+// (lqr_params.cpp); the default constructor takes the defaults from there.
 struct LqrParams {
-  // Q = diag(100,100,100, 1,1,1,1, 10,10,10), R = diag(1,5,5,0.1) as flown in the paper.
-  State q_diag = (State() << 100, 100, 100, 1, 1, 1, 1, 10, 10, 10).finished();
-  Input r_diag = (Input() << 1, 5, 5, 0.1).finished();
-  double dt = 0.01;              // [s] discretization step: the 100 Hz control period
-  double omega_max = 2.0;        // [rad/s] bound on ||omega_des||
-  double c_min = 2.0;            // [m/s^2] lower thrust bound
-  double c_max = 18.0;           // [m/s^2] upper thrust bound
-  double gravity = kDefaultGravity;  // [m/s^2]
-  LqrMethod method = LqrMethod::kTangent;
-  double tolerance = 1e-12;      // relative convergence tolerance of the chosen method
-  int max_iterations = 0;        // 0: the method's own default (64 doublings, 100000 iterations)
+  State q_diag;
+  Input r_diag;
+  double dt;
+  double omega_max;
+  double c_min;
+  double c_max;
+  double gravity;
+  LqrMethod method;
+  double tolerance;
+  int max_iterations;
 
+  LqrParams();
+  static const ParamTable<LqrParams>& declaration();
   // Reads the given `lqr` mapping; throws ConfigError naming the key on a wrong type or value.
-  static LqrParams load(const ConfigReader& lqr);
+  static LqrParams load(const ConfigReader& lqr) { return declaration().load(lqr); }
   // Empty when valid, else "key: reason" for the first violation found.
-  std::string invalidReason() const;
+  std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
 };
 
 const char* toString(LqrMethod method);
 bool parseLqrMethod(const std::string& text, LqrMethod& out);
+
+// What became of a PARAMS update offered to RuntimeLqrParams::apply().
+enum class ParamsOutcome {
+  kApplied,   // adopted (also an update whose bits are all other components')
+  kNotNewer,  // not after the last applied update in (utime, seq) order: a re-send or a replay
+  kInvalid,   // an unknown field bit, or values the LQR parameters refuse
+};
+const char* toString(ParamsOutcome outcome);
+
+// The LQR parameters of a running gain solver or controller: those loaded, changed by PARAMS under
+// one rule for both (and for their replay):
+//   - an update not after the last applied one in (utime, seq) order is kNotNewer;
+//   - FIELD_WEIGHTS sets q_diag and r_diag, FIELD_LIMITS omega_max, c_min and c_max; FIELD_MASS
+//     and FIELD_TRACKING belong to the bodyrate loop and the reference generator and change
+//     nothing here, but a mass outside kMassRange or an unknown tracking mode makes the whole
+//     update kInvalid, as does any other bit;
+//   - the result must pass LqrParams::invalidReason(), else kInvalid;
+//   - anything but kApplied leaves everything unchanged; kApplied moves seq() to the update's.
+class RuntimeLqrParams {
+ public:
+  explicit RuntimeLqrParams(const LqrParams& loaded) : params_(loaded) {}
+
+  ParamsOutcome apply(const ParamsUpdate& update);
+
+  const LqrParams& params() const { return params_; }
+  // seq of the last applied update (the params_seq GAINS and REFERENCE name), -1 before any.
+  int64_t seq() const { return seq_; }
+
+ private:
+  LqrParams params_;
+  int64_t utime_ = -1;
+  int64_t seq_ = -1;
+};
 
 }  // namespace sdlqr

@@ -31,27 +31,15 @@
 #include "sdlqr/mission/mission_core.hpp"
 #include "sdlqr/mission/scenario.hpp"
 #include "sdlqr/sim/sim_core.hpp"
+#include "sdlqr/params/vehicle_file.hpp"
 #include "sdlqr/sim/sim_params.hpp"
 #include "sdlqr/trajectory/params.hpp"
 
 namespace sdlqr::closedloop {
 
-// Every section of a vehicle file, as the processes read them.
-struct StackConfig {
-  VehicleParams vehicle;
-  LqrParams lqr;
-  sim::SimParams sim;
-  estimator::EstimatorParams estimator;
-  lowlevel::LowlevelParams lowlevel;
-  controller::ControllerParams controller;
-  gains::GainsParams gains;
-  trajectory::TrajectoryParams trajectory;
-  FaultParams faults;
-  ValidationLimits limits;
-
-  // Throws ConfigError naming the key.
-  static StackConfig load(const std::string& vehicle_file);
-};
+// Every section of a vehicle file, as the processes read them (StackConfig::load throws
+// ConfigError naming the key).
+using StackConfig = params::VehicleFile;
 
 struct RecordOptions {
   bool imu = false;         // 1 kHz: large; off unless asked for

@@ -46,7 +46,7 @@ struct ReplayParams {
   controller::ControllerParams controller;
   gains::GainsParams gains;
   FaultParams faults;
-  ValidationLimits limits;
+  ValidationLimits validation;
 };
 
 // How the pairing was honoured.
