@@ -103,6 +103,17 @@ TrackingOutput TemporalTracker::update(double now, const Vec3& /*position*/) { r
 
 void TemporalTracker::resumeFrom(const TrackingOutput& reference, double now) { start_time_ = now - reference.time; }
 
+TrajectoryTracker::TrajectoryTracker(const TrajectoryTracker& other)
+    : trajectory_(other.trajectory_),
+      spatial_(other.spatial_),
+      temporal_(other.temporal_),
+      active_(other.active_ == &other.spatial_ ? static_cast<TrackingScheme*>(&spatial_) : &temporal_),
+      last_(other.last_),
+      loaded_(other.loaded_) {
+  spatial_.rebind(&trajectory_);
+  temporal_.rebind(&trajectory_);
+}
+
 std::string TrajectoryTracker::load(Trajectory trajectory, double start_time, const SampleChecks& checks) {
   const std::string why = validateTrajectory(trajectory, checks);
   if (!why.empty()) return why;

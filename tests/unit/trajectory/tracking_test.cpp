@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "allocation_counter.hpp"
 #include "sdlqr/math/quaternion.hpp"
@@ -34,6 +35,24 @@ Trajectory square() {
   const Vec3 corners[] = {Vec3(0, 0, 1), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(0, 1, 1), Vec3(0, 0, 1)};
   for (int k = 0; k < 5; ++k) trajectory.samples.push_back(sampleAt(k, corners[k], 0.0, 1.0, 9.81));
   return trajectory;
+}
+
+// A copy tracks its own trajectory, in the active mode and from the place of the original (the
+// replay tries an input on a copy of the controller): it outlives the original.
+TEST(TrajectoryTrackerCopy, ContinuesFromTheOriginalsPlaceOnItsOwnTrajectory) {
+  auto original = std::make_unique<TrajectoryTracker>();
+  ASSERT_EQ(original->load(straightLine(), 0.0), "");
+  original->update(0.0, Vec3(2.5, 0.0, 1.0));
+  ASSERT_TRUE(original->setMode(ReferenceMode::kTemporal, 10.0));
+  const TrajectoryTracker copy = *original;
+  const TrackingOutput expected = original->update(10.5, Vec3::Zero());
+  original.reset();
+  TrajectoryTracker continued = copy;
+  EXPECT_EQ(continued.mode(), ReferenceMode::kTemporal);
+  const TrackingOutput out = continued.update(10.5, Vec3::Zero());
+  EXPECT_EQ(out.index, expected.index);
+  EXPECT_DOUBLE_EQ(out.time, expected.time);
+  EXPECT_EQ(out.x, expected.x);
 }
 
 TEST(SpatialTracking, GammaIsTheProjectionOnTheSegment) {

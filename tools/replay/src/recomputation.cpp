@@ -1,7 +1,9 @@
 #include "sdlqr/replay/recomputation.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 namespace sdlqr::replay {
 
@@ -21,6 +23,9 @@ int64_t RecordedFlight::utimeAt(const LogPosition& p) const {
 }
 
 namespace {
+
+// How far ahead of the newest recomputed estimate the recorder can hear one, or a solve at one.
+constexpr int64_t kMaxSeqsAhead = 2;
 
 template <class T>
 std::map<int64_t, std::size_t> indexBySeq(const std::vector<T>& series) {
@@ -71,6 +76,7 @@ void Recomputation::step() {
 void Recomputation::finish() {
   for (const auto& [seq, estimate] : waiting_) handOver(estimate);
   waiting_.clear();
+  judgeGainsHeardEarly(std::numeric_limits<int64_t>::max());
   for (std::size_t i : heard_commands_) applyCommand(i);
   heard_commands_.clear();
   updateRejected();
@@ -124,17 +130,43 @@ void Recomputation::onRecordedEstimate(const StateEstimate& recorded) {
 // the newest recomputed estimate, is that, and takes its place when it is recomputed.
 bool Recomputation::aheadOfItsImu(const StateEstimate& recorded) const {
   constexpr int64_t kMaxAheadUs = 50'000;
-  return recorded.seq > last_recomputed_seq_ && recorded.seq <= last_recomputed_seq_ + 2 &&
+  return recorded.seq > last_recomputed_seq_ && recorded.seq <= last_recomputed_seq_ + kMaxSeqsAhead &&
          recorded.utime > last_recomputed_utime_ && recorded.utime <= last_recomputed_utime_ + kMaxAheadUs;
 }
 
 // A recorded GAINS the replay did not solve (forged, or from another solver) reached the
-// controller on the bus: it is judged by the controller's core here too.
+// controller on the bus: it is judged by the controller's core here too. The recorder reads
+// GAINS and STATE_EST on sockets of their own, so on a busy machine it may hear a solve before
+// the estimate it was solved at, even before the IMU sample that completed that estimate (see
+// aheadOfItsImu): such a one is judged once that estimate is handed over.
 void Recomputation::onRecordedGains(const GainSet& recorded) {
-  const auto ours = replayed_gains_.find(recorded.seq);
-  if (ours != replayed_gains_.end() && outputs_.gains[ours->second].utime == recorded.utime) return;
+  if (solvedByReplay(recorded)) return;
+  const bool estimate_not_handed_over = recorded.state_seq > std::min(handed_over_up_to_, last_recomputed_seq_);
+  if (estimate_not_handed_over && recorded.state_seq <= last_recomputed_seq_ + kMaxSeqsAhead) {
+    gains_heard_early_.push_back(recorded);
+    return;
+  }
   ++pairing_.foreign_gains;
   controller_.onGains(recorded);
+}
+
+bool Recomputation::solvedByReplay(const GainSet& recorded) const {
+  const auto ours = replayed_gains_.find(recorded.seq);
+  return ours != replayed_gains_.end() && outputs_.gains[ours->second].utime == recorded.utime;
+}
+
+// Those heard early whose estimate (or a later one) has been handed over: foreign if the
+// replay did not solve them by now.
+void Recomputation::judgeGainsHeardEarly(int64_t handed_over_seq) {
+  auto judged = std::remove_if(gains_heard_early_.begin(), gains_heard_early_.end(), [&](const GainSet& g) {
+    if (g.state_seq > handed_over_seq) return false;
+    if (!solvedByReplay(g)) {
+          ++pairing_.foreign_gains;
+      controller_.onGains(g);
+    }
+    return true;
+  });
+  gains_heard_early_.erase(judged, gains_heard_early_.end());
 }
 
 // Refused by the bus's decode step: counted by the cores subscribed to the channel, as on the bus.
@@ -153,6 +185,7 @@ void Recomputation::onUndecodable(const UndecodableInput& input) {
 // name the GAINS solved at it (when the solver was quicker than the controller).
 void Recomputation::handOver(const StateEstimate& estimate) {
   gainsOnEstimate(estimate);
+  if (!gains_heard_early_.empty()) judgeGainsHeardEarly(estimate.seq);
   controllerOnEstimate(estimate);
 }
 
@@ -280,7 +313,12 @@ void Recomputation::deliverCommandsBefore(const StateEstimate& estimate) {
   const auto reference = t < ticks.size() && ticks[t].state_seq == estimate.seq
                              ? recorded_reference_.find(ticks[t].reference_seq)
                              : recorded_reference_.end();
-  if (reference == recorded_reference_.end()) {  // no tick to say otherwise: the recorder's order
+  if (reference == recorded_reference_.end()) {
+    // No tick names this estimate. The COMMANDs heard wait for the tick that names them (the
+    // controller may have heard them later than the recorder: a TAKEOFF delivered now would make
+    // a tick the recording lacks), unless without them this estimate would tick (one that stops
+    // the ticks, a LAND's touch-down): then in the recorder's order.
+    if (!heard_commands_.empty() && !ticksWithoutHeardCommands(estimate)) return;
     for (std::size_t i : heard_commands_) applyCommand(i);
     heard_commands_.clear();
     return;
@@ -296,6 +334,17 @@ void Recomputation::deliverCommandsBefore(const StateEstimate& estimate) {
   heard_commands_.erase(std::remove_if(heard_commands_.begin(), heard_commands_.end(),
                                        [&](std::size_t i) { return command_delivered_[i]; }),
                         heard_commands_.end());
+}
+
+// On a copy of the controller's core: does `estimate` tick?
+bool Recomputation::ticksWithoutHeardCommands(const StateEstimate& estimate) const {
+  controller::ControllerCore trial = controller_;
+  bool ticked = false;
+  OutboxTo discard([&](const auto& m) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(m)>, RateCommand>) ticked = true;
+  });
+  trial.onStateEstimate(estimate, discard);
+  return ticked;
 }
 
 // Each recorded COMMAND reaches the controller's core once, at its delivery.

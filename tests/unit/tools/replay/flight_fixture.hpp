@@ -6,6 +6,7 @@
 // A VIO pose is placed just before the IMU sample whose STATE_EST first names it (vio_seq).
 
 #include <algorithm>
+#include <functional>
 #include <string>
 
 #include "sdlqr/closedloop/closed_loop.hpp"
@@ -31,8 +32,10 @@ struct ClosedLoopFlight {
   RecordedFlight flight;
 };
 
-inline ClosedLoopFlight flyClosedLoop() {
-  const mission::Scenario scenario = mission::Scenario::load(kScenario);
+// `edit` changes the scenario before the flight (e.g. an event's time).
+inline ClosedLoopFlight flyClosedLoop(const std::function<void(mission::Scenario&)>& edit = {}) {
+  mission::Scenario scenario = mission::Scenario::load(kScenario);
+  if (edit) edit(scenario);
   ClosedLoopFlight out{closedloop::StackConfig::load(scenario.vehicle_path), {}};
   closedloop::RecordOptions record;
   record.imu = true;

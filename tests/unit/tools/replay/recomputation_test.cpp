@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
+#include <stdexcept>
 
 #include "flight_fixture.hpp"
 #include "sdlqr/replay/output_comparison.hpp"
@@ -151,6 +153,111 @@ TEST(Recomputation, ACommandTheRecorderHeardLateIsAppliedBeforeTheTickThatNamesI
   const Comparison comparison = compareOutputs(recorded, replay.outputs(), 0.0);
   std::cout << formatComparison(comparison);
   EXPECT_TRUE(comparison.bitForBit());
+}
+
+// Where `kind` entry `index` sits in the recorder's order.
+size_t positionOf(const RecordedFlight& f, InputKind kind, size_t index) {
+  for (size_t i = 0; i < f.order.size(); ++i) {
+    if (f.order[i].kind == kind && static_cast<size_t>(f.order[i].index) == index) return i;
+  }
+  throw std::runtime_error("not in the order");
+}
+
+// The other way round: the controller heard the take-off after estimates the recorder heard it
+// before. No tick names those estimates in the recording, so the replay must not tick on them
+// either: the COMMAND reaches the controller's core later (seen on a busy 2-core machine: the
+// first recorded tick one grid point later than the replay's). The flight: the take-off 25 ms
+// later; the recording: its COMMAND heard 6 estimates (24 ms) earlier.
+TEST(Recomputation, ACommandTheControllerHeardLateDoesNotMakeTheReplayTickEarlier) {
+  const ClosedLoopFlight c = test::flyClosedLoop([](mission::Scenario& s) {
+    for (mission::ScenarioEvent& e : s.events) {
+      if (e.at == 1.0) e.at = 1.025;
+    }
+  });
+  RecordedFlight recorded = c.flight;
+  const Command& takeoff = recorded.command.at(1);
+  ASSERT_GT(takeoff.utime, 1'020'000);
+  size_t at = positionOf(recorded, InputKind::kCommand, 1);
+  for (int estimates = 0; at > 0 && estimates < 6; --at) {
+    std::swap(recorded.order[at], recorded.order[at - 1]);
+    if (recorded.order[at].kind == InputKind::kStateEstimate) ++estimates;
+  }
+  Recomputation replay(test::paramsOf(c.config), recorded);
+  replay.runToEnd();
+  const Comparison comparison = compareOutputs(recorded, replay.outputs(), 0.0);
+  std::cout << formatComparison(comparison);
+  EXPECT_TRUE(comparison.bitForBit());
+  ASSERT_FALSE(replay.outputs().rate_command.empty());
+  EXPECT_EQ(replay.outputs().rate_command.front().utime, recorded.rate_command.front().utime);
+}
+
+// The recorder reads GAINS and STATE_EST on sockets of their own: on a busy machine it logs a
+// solve before the estimate it was solved at, even before that estimate's IMU sample. Such a
+// GAINS is the replay's own solve, not a foreign one fed to the controller early.
+TEST(Recomputation, AGainsLoggedBeforeItsEstimateIsNotForeign) {
+  const ClosedLoopFlight& c = closedLoopFlight();
+  RecordedFlight recorded = replayedFlight();
+  for (size_t g = 0; g < recorded.gains.size(); ++g) {
+    const auto estimate = std::find_if(recorded.state_estimate.begin(), recorded.state_estimate.end(),
+                                       [&](const StateEstimate& e) { return e.seq == recorded.gains[g].state_seq; });
+    ASSERT_NE(estimate, recorded.state_estimate.end());
+    size_t at = positionOf(recorded, InputKind::kStateEstimate,
+                           static_cast<size_t>(estimate - recorded.state_estimate.begin()));
+    while (at > 0 && recorded.order[at - 1].kind != InputKind::kImu) --at;
+    if (at > 0) --at;  // before the IMU sample that completes the estimate
+    recorded.order.insert(recorded.order.begin() + static_cast<std::ptrdiff_t>(at),
+                          LogPosition{InputKind::kGains, static_cast<int32_t>(g)});
+  }
+  Recomputation replay(test::paramsOf(c.config), recorded);
+  replay.runToEnd();
+  const Comparison comparison = compareOutputs(recorded, replay.outputs(), 0.0);
+  std::cout << formatComparison(comparison);
+  EXPECT_EQ(replay.pairing().foreign_gains, 0);
+  EXPECT_TRUE(comparison.bitForBit());
+}
+
+// The estimate too heard before its IMU sample, and the solve at it between the two.
+TEST(Recomputation, AGainsLoggedBetweenAnEarlyEstimateAndItsImuIsNotForeign) {
+  const ClosedLoopFlight& c = closedLoopFlight();
+  RecordedFlight recorded = replayedFlight();
+  for (size_t g = 0; g < recorded.gains.size(); ++g) {
+    const auto estimate = std::find_if(recorded.state_estimate.begin(), recorded.state_estimate.end(),
+                                       [&](const StateEstimate& e) { return e.seq == recorded.gains[g].state_seq; });
+    ASSERT_NE(estimate, recorded.state_estimate.end());
+    const size_t at = positionOf(recorded, InputKind::kStateEstimate,
+                                 static_cast<size_t>(estimate - recorded.state_estimate.begin()));
+    ASSERT_EQ(recorded.order[at - 1].kind, InputKind::kImu);
+    std::swap(recorded.order[at - 1], recorded.order[at]);  // STATE_EST, then its IMU
+    recorded.order.insert(recorded.order.begin() + static_cast<std::ptrdiff_t>(at),
+                          LogPosition{InputKind::kGains, static_cast<int32_t>(g)});
+  }
+  Recomputation replay(test::paramsOf(c.config), recorded);
+  replay.runToEnd();
+  const Comparison comparison = compareOutputs(recorded, replay.outputs(), 0.0);
+  std::cout << formatComparison(comparison);
+  EXPECT_EQ(replay.pairing().foreign_gains, 0);
+  EXPECT_TRUE(comparison.bitForBit());
+}
+
+// A GAINS no solve of the replay matches, logged as early, is still foreign: judged by the
+// controller's core once its estimate is handed over.
+TEST(Recomputation, AForgedGainsLoggedBeforeItsEstimateIsStillForeign) {
+  const ClosedLoopFlight& c = closedLoopFlight();
+  RecordedFlight recorded = replayedFlight();
+  GainSet forged = recorded.gains[40];
+  forged.seq = 100000;
+  forged.K = -forged.K;  // destabilizing: the controller's closed-loop check refuses it
+  recorded.gains.push_back(forged);
+  const size_t estimate = static_cast<size_t>(std::find_if(recorded.state_estimate.begin(), recorded.state_estimate.end(),
+                                                           [&](const StateEstimate& e) { return e.seq == forged.state_seq; }) -
+                                              recorded.state_estimate.begin());
+  const size_t at = positionOf(recorded, InputKind::kStateEstimate, estimate);
+  recorded.order.insert(recorded.order.begin() + static_cast<std::ptrdiff_t>(at),
+                        LogPosition{InputKind::kGains, static_cast<int32_t>(recorded.gains.size() - 1)});
+  Recomputation replay(test::paramsOf(c.config), recorded);
+  replay.runToEnd();
+  EXPECT_EQ(replay.pairing().foreign_gains, 1);
+  EXPECT_EQ(replay.controller().health().rejected(), 1);
 }
 
 }  // namespace

@@ -72,6 +72,7 @@ class SpatialTracker final : public TrackingScheme {
   TrackingOutput update(double now, const Vec3& position) override;
   void resumeFrom(const TrackingOutput& reference, double now) override;
   void restart() { index_ = 1, lap_ = 0; }
+  void rebind(const Trajectory* trajectory) { trajectory_ = trajectory; }
 
  private:
   const Trajectory* trajectory_;
@@ -88,6 +89,7 @@ class TemporalTracker final : public TrackingScheme {
   void resumeFrom(const TrackingOutput& reference, double now) override;
   void setStartTime(double start_time) { start_time_ = start_time; }
   double startTime() const { return start_time_; }
+  void rebind(const Trajectory* trajectory) { trajectory_ = trajectory; }
   // The reference at trajectory time tau [s].
   TrackingOutput at(double tau) const;
 
@@ -100,8 +102,9 @@ class TemporalTracker final : public TrackingScheme {
 class TrajectoryTracker {
  public:
   TrajectoryTracker() = default;
-  // The schemes point at the member trajectory: not copyable, not movable.
-  TrajectoryTracker(const TrajectoryTracker&) = delete;
+  // The schemes point at the member trajectory: a copy's point at its own (the replay tries a
+  // COMMAND on a copy of the controller). Not assignable.
+  TrajectoryTracker(const TrajectoryTracker& other);
   TrajectoryTracker& operator=(const TrajectoryTracker&) = delete;
 
   // Validates and takes the trajectory (copies samples: call on receipt, not per tick); starts at

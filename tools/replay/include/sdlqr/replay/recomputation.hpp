@@ -113,6 +113,8 @@ class Recomputation {
   void feedWallTime(int64_t utime);
   void onRecordedEstimate(const StateEstimate& recorded);
   void onRecordedGains(const GainSet& recorded);
+  bool solvedByReplay(const GainSet& recorded) const;
+  void judgeGainsHeardEarly(int64_t handed_over_seq);
   bool aheadOfItsImu(const StateEstimate& recorded) const;
   void onUndecodable(const UndecodableInput& input);
   void updateRejected();
@@ -128,6 +130,7 @@ class Recomputation {
                         int64_t& from_record);
   void feedNamedGains(int64_t gains_seq);
   void deliverCommandsBefore(const StateEstimate& estimate);
+  bool ticksWithoutHeardCommands(const StateEstimate& estimate) const;
   void applyCommand(std::size_t index);
   void onParams(const ParamsUpdate& update);
 
@@ -155,6 +158,7 @@ class Recomputation {
   int64_t applied_command_seq_ = -1;         // highest seq delivered
   // Recomputed outputs by seq, for the pairing.
   SeqIndex replayed_gains_, replayed_reference_;
+  std::vector<GainSet> gains_heard_early_;  // recorded before the estimate they were solved at
   SeqIndex recorded_gains_, recorded_reference_, recorded_estimate_;
 };
 
