@@ -31,7 +31,7 @@ if kill -0 "$spy" 2>/dev/null; then
   for child in $(pgrep -P "$spy" -f lcm.spy.Spy); do kill -TERM "$child" 2>/dev/null; done
   wait "$spy" 2>/dev/null
   # When xvfb-run fails to clean up ("problem while cleaning up temporary directory") its Xvfb
-  # lives on, holding every descriptor it inherited (the flight lock of `flock ... ctest`).
+  # lives on, holding every descriptor it inherited (e.g. a lock of `flock ... ctest`).
   for pid in $xvfb; do kill -TERM "$pid" 2>/dev/null; done
 else
   wait "$spy"

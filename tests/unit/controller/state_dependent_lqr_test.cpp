@@ -1,5 +1,6 @@
-// The 100 Hz controller: tick scheduling in simulation time, gain freshness (DESIGN §7: keep the
-// last valid K, flag it stale, fall back to a hover K after a timeout), parameter updates.
+// The 100 Hz controller: tick scheduling in simulation time, gain freshness (ARCHITECTURE.md
+// §4, §7: keep the last valid K, flag it stale, fall back to a hover K after a timeout),
+// parameter updates.
 
 #include <gtest/gtest.h>
 
