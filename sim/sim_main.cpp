@@ -8,6 +8,7 @@
 #include "sdlqr/bus/paced_loop.hpp"
 #include "sdlqr/config/config.hpp"
 #include "sdlqr/config/print_config.hpp"
+#include "sdlqr/mission/scenario.hpp"
 #include "sdlqr/sim/sim_cli.hpp"
 #include "sdlqr/sim/sim_core.hpp"
 
@@ -26,7 +27,10 @@ int main(int argc, char** argv) {
                          {printedSection("vehicle", vehicle), printedSection("sim", params)});
       return 0;
     }
-    SimCore core(vehicle, params);
+    // The scenario's simulated world (plant mismatch, wind, airborne start, throw), if one is named.
+    const sim::SimStress stress =
+        options.scenario_path.empty() ? sim::SimStress() : mission::Scenario::load(options.scenario_path).sim;
+    SimCore core(vehicle, params, stress);
 
     bus::Node node("sdlqr-sim", options.process, core.health());
     bus::CoreBinding<SimCore> bus(node, core);

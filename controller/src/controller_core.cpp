@@ -18,7 +18,8 @@ ControllerCore::ControllerCore(const LqrParams& lqr, const ControllerParams& par
       fallback_ticks_(health_.counters().add("controller.fallback_ticks")),
       stale_ticks_(health_.counters().add("controller.stale_ticks")),
       saturated_ticks_(health_.counters().add("controller.saturated_ticks")),
-      gains_freshness_(health_.counters().add("watchdog.gains.freshness")) {}  // 0 fresh, 1 stale, 2 fallback
+      gains_freshness_(health_.counters().add("watchdog.gains.freshness")),  // 0 fresh, 1 stale, 2 fallback
+      guard_aborts_(health_.counters().add("trajectory.guard_abort")) {}
 
 RejectReason ControllerCore::onStateEstimate(const StateEstimate& estimate, Outbox& out) {
   const RejectReason reason = admitClock(estimate, limits_, state_clock_);
@@ -40,6 +41,7 @@ void ControllerCore::countTick(const RateCommand& command) {
   if (status.gains == GainsFreshness::kFallback) c.increment(fallback_ticks_);
   if (status.gains == GainsFreshness::kStale) c.increment(stale_ticks_);
   if (command.saturated) c.increment(saturated_ticks_);
+  c.set(guard_aborts_, lqr_.references().guardAborts());
   health_.setState(status.gains == GainsFreshness::kFresh ? ProcessState::kRunning : ProcessState::kDegraded);
 }
 

@@ -31,6 +31,7 @@ const ParamTable<ControllerParams>& ControllerParams::declaration() {
     t.choice("tracking", &P::tracking, ReferenceMode::kSpatial,
              {{"spatial", ReferenceMode::kSpatial}, {"temporal", ReferenceMode::kTemporal}},
              "reference scheme of trajectories that do not say (spatial or temporal)");
+    t.section("guard", &P::guard);
     t.check("gains_fallback_s", [](const P& p) { return p.gains_fallback_s > p.gains_stale_s; }, "must be > gains_stale_s");
     return t;
   }();

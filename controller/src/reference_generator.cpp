@@ -149,6 +149,17 @@ bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
     case FlightPhase::kTrajectory: {
       const trajectory::TrackingOutput& tracked =
           tracker_.update(static_cast<double>(estimate.utime) * 1e-6, estimate.position);
+      const trajectory::GuardTrip trip =
+          trajectory::checkGuard(params_.guard, estimate.position, estimate.velocity, position(tracked.x));
+      if (trip != trajectory::GuardTrip::kNone) {
+        // Beyond the guard's bounds: stop following the reference and hold where the vehicle is.
+        ++guard_aborts_;
+        last_guard_trip_ = trip;
+        tracker_.clear();
+        hold(estimate.position, quat::yaw(orientation(tracked.x)));
+        position_ref = setpoint_;
+        break;
+      }
       out.x = tracked.x;
       out.u = tracked.u;
       out.mode = tracker_.mode();

@@ -1,5 +1,6 @@
 #include "sdlqr/mission/mission_core.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -29,7 +30,38 @@ MissionCore::MissionCore(const Scenario& scenario, const trajectory::TrajectoryP
       options_(options),
       trajectories_(buildTrajectories(scenario, trajectory, lqr)),
       player_(scenario),
-      resender_(static_cast<int64_t>(options.resend_interval_s * 1e6)) {}
+      resender_(static_cast<int64_t>(options.resend_interval_s * 1e6)),
+      throws_detected_(health_.counters().add("throw.detected")) {
+  if (scenario.throw_mode.enabled()) {
+    throw_detector_.emplace(scenario.throw_mode, lqr.gravity);
+    throw_armed_utime_ = static_cast<int64_t>(scenario.throw_mode.at * 1e6);
+  }
+}
+
+void MissionCore::publishCommand(Command command, int64_t utime, Outbox& out) {
+  command.utime = utime;
+  command.seq = command_seq_++;
+  out.publish(command);
+  resender_.sent(command);
+}
+
+void MissionCore::onStateEstimate(const StateEstimate& estimate, Outbox& out) {
+  if (!throw_detector_ || estimate.utime < throw_armed_utime_) return;
+  const std::optional<ThrowDetection> detection = throw_detector_->onEstimate(estimate);
+  if (!detection) return;
+  health_.counters().increment(throws_detected_);
+  // Stamped with the estimate's time: every consumer has that estimate (or a later one) by now.
+  const int64_t utime = std::max(now_utime_, detection->utime);
+  Command arm;
+  arm.command = CommandType::kArm;
+  publishCommand(arm, utime, out);
+  Command hold;
+  hold.command = CommandType::kGoto;
+  hold.position = detection->position;
+  hold.yaw = detection->yaw;
+  publishCommand(hold, utime, out);
+  if (throw_observer_) throw_observer_(*detection);
+}
 
 void MissionCore::onClock(int64_t utime, Outbox& out) {
   if (utime <= now_utime_) return;
@@ -44,14 +76,9 @@ void MissionCore::onClock(int64_t utime, Outbox& out) {
 
 void MissionCore::play(const ScenarioEvent& event, Outbox& out) {
   switch (event.kind) {
-    case ScenarioEvent::Kind::kCommand: {
-      Command command = event.command;
-      command.utime = now_utime_;
-      command.seq = command_seq_++;
-      out.publish(command);
-      resender_.sent(command);
+    case ScenarioEvent::Kind::kCommand:
+      publishCommand(event.command, now_utime_, out);
       break;
-    }
     case ScenarioEvent::Kind::kDisturbance: {
       Disturbance disturbance = event.disturbance;
       disturbance.utime = now_utime_;
@@ -125,6 +152,11 @@ std::string describeEvent(const ScenarioEvent& event) {
 
 void logEventToStderr(const ScenarioEvent& event, int64_t utime) {
   std::fprintf(stderr, "sdlqr-mission: t=%7.3f s  %s\n", 1e-6 * static_cast<double>(utime), describeEvent(event).c_str());
+}
+
+void logThrowToStderr(const ThrowDetection& d) {
+  std::fprintf(stderr, "sdlqr-mission: t=%7.3f s  throw detected at (%.2f, %.2f, %.2f) m, vz %.2f m/s: arm, hold there\n",
+               1e-6 * static_cast<double>(d.utime), d.position[0], d.position[1], d.position[2], d.velocity[2]);
 }
 
 }  // namespace sdlqr::mission

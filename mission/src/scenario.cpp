@@ -116,8 +116,40 @@ ParamsUpdate parseParams(const ConfigReader& p) {
   return out;
 }
 
+bool isSpeedPath(const std::string& generator) {
+  return generator == "circle" || generator == "lemniscate" || generator == "waypoints";
+}
+
+void parseSpeedPath(const ConfigReader& t, const std::string& base_dir, TrajectoryRequest& out) {
+  if (out.generator == "waypoints") {
+    if (!t.has("waypoints")) throw ConfigError(t.keyPath("waypoints"), "waypoints needs a YAML or CSV file");
+    t.read("waypoints", out.waypoints_path);
+    out.waypoints_path = resolve(base_dir, out.waypoints_path);
+  } else if (!t.has("speed")) {
+    throw ConfigError(t.keyPath("speed"), out.generator + " needs a speed [m/s]");
+  }
+  if (t.has("speed")) {
+    t.read("speed", out.speed);
+    if (!(out.speed > 0.0 && out.speed <= 30.0)) throw ConfigError(t.keyPath("speed"), "must be in (0, 30] m/s");
+  }
+  t.read("size", out.size);
+  if (!(out.size > 0.0 && out.size <= 100.0)) throw ConfigError(t.keyPath("size"), "must be in (0, 100] m");
+  t.read("center", out.center);
+  if (t.has("v_max")) {
+    t.read("v_max", out.v_max);
+    if (!(out.v_max > 0.0 && out.v_max <= 30.0)) throw ConfigError(t.keyPath("v_max"), "must be in (0, 30] m/s");
+  }
+  std::string on_infeasible = "refuse";
+  t.read("on_infeasible", on_infeasible);
+  if (on_infeasible != "refuse" && on_infeasible != "scale") {
+    throw ConfigError(t.keyPath("on_infeasible"), "expected refuse or scale");
+  }
+  out.scale_if_infeasible = on_infeasible == "scale";
+}
+
 TrajectoryRequest parseTrajectory(const ConfigReader& t, const std::string& base_dir) {
-  t.allowOnly({"generator", "csv", "laps", "tracking", "height_offset", "sample_dt"});
+  t.allowOnly({"generator", "csv", "laps", "tracking", "height_offset", "sample_dt", "waypoints", "speed", "size",
+               "center", "v_max", "on_infeasible"});
   TrajectoryRequest out;
   t.read("generator", out.generator);
   if (t.has("csv")) {
@@ -126,10 +158,18 @@ TrajectoryRequest parseTrajectory(const ConfigReader& t, const std::string& base
     if (out.generator.empty()) out.generator = "csv";
   }
   if (out.generator != "minsnap_fast" && out.generator != "minsnap_slow" && out.generator != "ellipse" &&
-      out.generator != "csv") {
-    throw ConfigError(t.keyPath("generator"), "expected minsnap_fast, minsnap_slow, ellipse or csv");
+      out.generator != "csv" && !isSpeedPath(out.generator)) {
+    throw ConfigError(t.keyPath("generator"),
+                      "expected minsnap_fast, minsnap_slow, ellipse, csv, circle, lemniscate or waypoints");
   }
   if (out.generator == "csv" && out.csv_path.empty()) throw ConfigError(t.keyPath("csv"), "csv needs a file");
+  if (isSpeedPath(out.generator)) {
+    parseSpeedPath(t, base_dir, out);
+  } else {
+    for (const char* key : {"waypoints", "speed", "size", "center", "v_max", "on_infeasible"}) {
+      if (t.has(key)) throw ConfigError(t.keyPath(key), "only for circle, lemniscate and waypoints");
+    }
+  }
   if (t.has("laps")) {
     t.read("laps", out.laps);
     if (out.laps < 1 || out.laps > 100) throw ConfigError(t.keyPath("laps"), "must be in [1, 100]");
@@ -163,7 +203,8 @@ TrajectoryRequest parseTrajectory(const ConfigReader& t, const std::string& base
 Scenario Scenario::load(const std::string& path) {
   const YAML::Node root_node = loadYamlFile(path);
   const ConfigReader root(root_node, "");
-  root.allowOnly({"name", "description", "vehicle", "seed", "duration", "rate", "events", "criteria"});
+  root.allowOnly(
+      {"name", "description", "vehicle", "seed", "duration", "rate", "events", "criteria", "sim", "throw_mode"});
   Scenario s;
   s.path = path;
   const std::string base_dir = directoryOf(path);
@@ -217,6 +258,8 @@ Scenario Scenario::load(const std::string& path) {
       s.events.push_back(event);
     }
   }
+  s.sim = sim::SimStress::load(root.child("sim"));
+  s.throw_mode = ThrowModeParams::declaration().load(root.child("throw_mode"));
   std::stable_sort(s.events.begin(), s.events.end(),
                    [](const ScenarioEvent& a, const ScenarioEvent& b) { return a.at < b.at; });
 

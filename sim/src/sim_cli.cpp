@@ -12,6 +12,8 @@ SimCommandLine parseSimCommandLine(int argc, const char* const* argv) {
   parser.addOption("--rate", &o.rate, "FACTOR", "simulated seconds per wall second (1 real time, 2 twice as fast)");
   parser.addOption("--seed", &o.seed, "N", "noise seed, >= 0 (default: sim.seed of the config)");
   parser.addOption("--duration", &o.duration, "S", "simulated seconds to run, 0 = until stopped (default 0)");
+  parser.addOption("--scenario", &o.scenario_path, "FILE",
+                   "scenario file whose `sim:` key changes the simulated world (plant, wind, start, throw)");
   parser.setEpilog(
       "The vehicle starts landed at sim.initial_position; see the `sim:` section of config/quad255.yaml.\n"
       "Exit codes: 0 stopped (SIGINT/SIGTERM or --duration), 2 bad option or configuration, 1 runtime error.");

@@ -4,8 +4,8 @@
 
 namespace sdlqr::sim {
 
-SimCore::SimCore(const VehicleParams& vehicle, const SimParams& params)
-    : simulator_(vehicle, params),
+SimCore::SimCore(const VehicleParams& vehicle, const SimParams& params, const SimStress& stress)
+    : simulator_(vehicle, params, static_cast<uint64_t>(params.seed), stress),
       vehicle_(vehicle),
       params_(params),
       disturbances_accepted_(health_.counters().add("disturbance.accepted")),

@@ -1,5 +1,6 @@
 #include "sdlqr/sim/simulator.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 #include "sdlqr/sim/ground.hpp"
@@ -15,6 +16,36 @@ const VehicleParams& checked(const VehicleParams& vehicle, const SimParams& para
   return vehicle;
 }
 
+// The vehicle file with the scenario's plant override: the airframe that really flies.
+VehicleParams plantOf(const VehicleParams& vehicle, const PlantOverride& plant) {
+  VehicleParams p = vehicle;
+  p.mass *= plant.mass_scale;
+  p.inertia_diag = p.inertia_diag.cwiseProduct(plant.inertia_scale);
+  p.motor_time_constant *= plant.motor_time_constant_scale;
+  return p;
+}
+
+const SimStress& checked(const SimStress& stress) {
+  if (const std::string why = stress.invalidReason(); !why.empty()) throw std::invalid_argument("sim." + why);
+  return stress;
+}
+
+Quat fromRollPitchYaw(const Vec3& degrees) {
+  const Vec3 r = degrees * (M_PI / 180.0);
+  const Quat roll = quat::exp(Vec3(r[0], 0.0, 0.0));
+  const Quat pitch = quat::exp(Vec3(0.0, r[1], 0.0));
+  return quat::multiply(quat::fromYaw(r[2]), quat::multiply(pitch, roll));
+}
+
+BodyState airborneState(const AirborneStart& start) {
+  BodyState s;
+  s.position = start.position;
+  s.orientation = fromRollPitchYaw(start.attitude_deg);
+  s.velocity = start.velocity;
+  s.body_rate = start.body_rate;
+  return s;
+}
+
 BodyProperties propertiesOf(const VehicleParams& vehicle, double gravity) {
   BodyProperties p;
   p.mass = vehicle.mass;
@@ -28,15 +59,19 @@ BodyProperties propertiesOf(const VehicleParams& vehicle, double gravity) {
 Simulator::Simulator(const VehicleParams& vehicle, const SimParams& params)
     : Simulator(vehicle, params, static_cast<uint64_t>(params.seed)) {}
 
-Simulator::Simulator(const VehicleParams& vehicle, const SimParams& params, uint64_t seed)
+Simulator::Simulator(const VehicleParams& vehicle, const SimParams& params, uint64_t seed, const SimStress& stress)
     : vehicle_(checked(vehicle, params)),
       params_(params),
-      body_properties_(propertiesOf(vehicle, params.gravity)),
-      rotor_wrench_(vehicle, params.gravity),
-      motors_(vehicle.motor_time_constant),
+      stress_(checked(stress)),
+      plant_(plantOf(vehicle, stress.plant)),
+      body_properties_(propertiesOf(plant_, params.gravity)),
+      rotor_wrench_(plant_, params.gravity),
+      motors_(plant_.motor_time_constant),
       battery_(params.battery, vehicle, params.gravity),
       imu_(params.imu, seed),
       vio_(params.vio, params.physics_rate_hz, seed),
+      wind_(stress.wind, params.physicsPeriod(), seed),
+      hand_(stress.throw_event, params.initial_yaw),
       dt_(params.physicsPeriod()),
       period_us_(params.physicsPeriodUs()),
       imu_decimation_(params.physics_rate_hz / params.imu.rate_hz),
@@ -45,6 +80,11 @@ Simulator::Simulator(const VehicleParams& vehicle, const SimParams& params, uint
   start.position = params.initial_position;
   start.orientation = quat::fromYaw(params.initial_yaw);
   setBodyState(start);
+  if (stress_.airborne_start.enabled()) {
+    const Vec4 hover = Vec4::Constant(vehicle_.hoverThrustPerRotor(params.gravity));
+    setBodyState(airborneState(stress_.airborne_start), stress_.airborne_start.motors_spinning ? hover : Vec4::Zero());
+  }
+  if (stress_.throw_event.enabled()) setBodyState(hand_.stateAt(0.0));
 }
 
 void Simulator::setBodyState(const BodyState& state, const Vec4& motor_thrust) {
@@ -68,30 +108,51 @@ RejectReason Simulator::addDisturbance(const Disturbance& disturbance) {
   return disturbances_.add(disturbance, utime()) ? RejectReason::kNone : RejectReason::kQueueFull;
 }
 
+// The schedule and the wind are sampled at the start of the step: their edges fall on step boundaries.
+Wrench Simulator::wrenchOf(const Vec4& thrust, const BodyState& s, int64_t start_utime) const {
+  Wrench w;
+  if (wind_.enabled() || stress_.plant.body_drag > 0.0) {
+    // Drag acts on the velocity relative to the air.
+    BodyState in_air = s;
+    in_air.velocity -= wind_velocity_;
+    w = rotor_wrench_(thrust, in_air);
+    w.force_world += frameDrag(stress_.plant.body_drag, s.velocity, wind_velocity_);
+  } else {
+    w = rotor_wrench_(thrust, s);
+  }
+  const Wrench external = disturbances_.wrenchAt(start_utime, s);
+  w.force_world += external.force_world;
+  w.torque_body += external.torque_body;
+  return w;
+}
+
 StepOutput Simulator::step() {
   const int64_t start_utime = utime();
   disturbances_.expire(start_utime);
-  const double thrust_scale = battery_.thrustScale();
-  // The schedule is sampled at the start of the step: disturbance edges fall on step boundaries.
+  const double thrust_scale = thrustScale();
+  wind_velocity_ = wind_.velocity();
   const auto wrench_at = [&](const BodyState& s, double tau) {
-    Wrench w = rotor_wrench_(thrust_scale * motors_.thrustAt(tau), s);
-    const Wrench external = disturbances_.wrenchAt(start_utime, s);
-    w.force_world += external.force_world;
-    w.torque_body += external.torque_body;
-    return w;
+    return wrenchOf(thrust_scale * motors_.thrustAt(tau), s, start_utime);
   };
   external_force_ = disturbances_.wrenchAt(start_utime, body_).force_world;
 
   const Vec3 velocity_before = body_.velocity;
-  BodyState next = rk4Step(body_, dt_, body_properties_, wrench_at);
-  const bool below_ground = next.position.z() < 0.0 || (on_ground_ && next.position.z() <= 0.0);
-  if (below_ground) {
-    if (!on_ground_ && isCrash(next, params_.ground)) crashed_ = true;
-    next = restingOnGround(next);
+  const double end_s = 1e-6 * static_cast<double>(start_utime + period_us_);
+  if (hand_.holds(end_s)) {
+    body_ = hand_.stateAt(end_s);  // the hand moves it, whatever the rotors do
+    on_ground_ = false;
+  } else {
+    BodyState next = rk4Step(body_, dt_, body_properties_, wrench_at);
+    const bool below_ground = next.position.z() < 0.0 || (on_ground_ && next.position.z() <= 0.0);
+    if (below_ground) {
+      if (!on_ground_ && isCrash(next, params_.ground)) crashed_ = true;
+      next = restingOnGround(next);
+    }
+    on_ground_ = below_ground;
+    body_ = next;
   }
-  on_ground_ = below_ground;
-  body_ = next;
   acceleration_ = (body_.velocity - velocity_before) / dt_;
+  if (wind_.enabled()) wind_.advance();
 
   motors_.advance(dt_);
   battery_.update(dt_, rotorThrust());

@@ -7,6 +7,17 @@
 
 namespace sdlqr::trajectory {
 
+void appendSample(Trajectory& out, double t, const FlatReference& reference) {
+  TrajectorySample sample;
+  sample.t = t;
+  sample.x = reference.x;
+  sample.u = reference.u;
+  if (!out.samples.empty()) {
+    orientation(sample.x) = quat::sameHemisphere(orientation(sample.x), orientation(out.samples.back().x));
+  }
+  out.samples.push_back(sample);
+}
+
 Trajectory sampleTrajectory(const MinSnapTrajectory& polynomial, double dt, double gravity) {
   if (!std::isfinite(dt) || dt <= 0.0) throw std::invalid_argument("sample dt must be finite and > 0");
   const double duration = polynomial.duration();
@@ -14,17 +25,7 @@ Trajectory sampleTrajectory(const MinSnapTrajectory& polynomial, double dt, doub
   const double too_close = 1e-6 * dt;
   Trajectory out;
   out.closed = polynomial.periodic;
-  auto add = [&](double t) {
-    const FlatReference ref = flatToReference(polynomial.evaluate(t), gravity);
-    TrajectorySample sample;
-    sample.t = t;
-    sample.x = ref.x;
-    sample.u = ref.u;
-    if (!out.samples.empty()) {
-      orientation(sample.x) = quat::sameHemisphere(orientation(sample.x), orientation(out.samples.back().x));
-    }
-    out.samples.push_back(sample);
-  };
+  auto add = [&](double t) { appendSample(out, t, flatToReference(polynomial.evaluate(t), gravity)); };
   for (long k = 0;; ++k) {
     const double t = static_cast<double>(k) * dt;
     if (t > duration - too_close) break;

@@ -37,7 +37,7 @@ std::string writeConfig(const std::string& name, const std::string& text) {
 TEST(Executable, HelpPrintsUsageAndExitsZero) {
   const ProcessResult run = runSim("--help");
   EXPECT_EQ(run.exit_code, 0);
-  for (const char* option : {"--config", "--lcm-url", "--vehicle", "--rate", "--seed", "--duration"}) {
+  for (const char* option : {"--config", "--lcm-url", "--vehicle", "--rate", "--seed", "--duration", "--scenario"}) {
     EXPECT_NE(run.output.find(option), std::string::npos) << option;
   }
 }
@@ -48,6 +48,16 @@ TEST(Executable, UnknownConfigKeyExitsTwoNamingTheKey) {
   std::remove(path.c_str());
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.output.find("sim.vio.latncy_max_s"), std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find('\n'), run.output.size() - 1) << "one line expected: " << run.output;
+}
+
+// The scenario's simulated world is read before the bus opens: a bad value exits 2 naming it.
+TEST(Executable, BadScenarioSimKeyExitsTwoNamingTheKey) {
+  const std::string path = writeConfig("sim_bad_stress", "sim:\n  wind:\n    gust_std: [1, -1, 0]\n");
+  const ProcessResult run = runSim("--scenario " + path);
+  std::remove(path.c_str());
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.output.find("sim.wind.gust_std[1]"), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find('\n'), run.output.size() - 1) << "one line expected: " << run.output;
 }
 

@@ -52,6 +52,26 @@ CriterionSpec trajectory(std::string_view key, B bound, std::string_view unit, s
   return c;
 }
 
+// Recoveries from an airborne start or a throw (recovery.hpp): NaN, a failed check, without one.
+double ofRecovery(const FlightReport& r, double RecoveryReport::*field) {
+  return r.recovery ? (*r.recovery).*field : kNotReached;
+}
+
+void addRecoveryCriteria(std::vector<CriterionSpec>& c) {
+  c.push_back(flight("recovery_level_time", B::kAtMost, "s", "tilt below {recovery_level_tilt_deg} for good, after the start",
+                     [](const FlightReport& r) { return ofRecovery(r, &RecoveryReport::level_time); }));
+  c.push_back(flight("recovery_height_lost", B::kAtMost, "m", "height at the start minus the lowest after it",
+                     [](const FlightReport& r) { return ofRecovery(r, &RecoveryReport::height_lost); }));
+  c.push_back(flight("recovery_settle_time", B::kAtMost, "s", "within {recovery_settle_error} of the reference for good",
+                     [](const FlightReport& r) { return ofRecovery(r, &RecoveryReport::settle_time); }));
+  c.push_back(flight("trajectory_aborts_max", B::kAtMost, "count", "trajectories the guard aborted into a hold",
+                     [](const FlightReport& r) { return static_cast<double>(r.trajectory_aborts); }));
+  c.push_back(flight("trajectory_aborts_min", B::kAtLeast, "count", "trajectories the guard aborted into a hold",
+                     [](const FlightReport& r) { return static_cast<double>(r.trajectory_aborts); }));
+  c.push_back(flight("throw_detect_delay", B::kAtMost, "s", "throw detected (ARM) after the hand let go",
+                     [](const FlightReport& r) { return ofRecovery(r, &RecoveryReport::detect_delay); }));
+}
+
 std::vector<CriterionSpec> makeCriteria() {
   std::vector<CriterionSpec> c;
   // Every flight.
@@ -127,6 +147,7 @@ std::vector<CriterionSpec> makeCriteria() {
   path_return.scope = S::kTrajectoryPull;
   path_return.of_trajectory_pull = [](const PathPull& p) { return p.return_time; };
   c.push_back(path_return);
+  addRecoveryCriteria(c);
   return c;
 }
 
@@ -137,6 +158,8 @@ double thresholdDefault(std::string_view key, const AnalysisOptions& options) {
   if (key == "skip_window") return options.path.skip_window;
   if (key == "path_return_error") return options.path.return_error;
   if (key == "hover_window") return options.hover_window;
+  if (key == "recovery_level_tilt_deg") return RecoveryOptions().level_tilt_deg;
+  if (key == "recovery_settle_error") return RecoveryOptions().settle_error;
   return kNotReached;
 }
 
@@ -221,6 +244,8 @@ const std::vector<ThresholdSpec>& thresholds() {
       {"skip_radius", "m", "a trajectory sample the vehicle came this close to was visited"},
       {"skip_window", "m", "path either side of a sample within which a visit counts"},
       {"path_return_error", "m", "distance to the path counted as back on it after a pull (path_return_time)"},
+      {"recovery_level_tilt_deg", "deg", "tilt counted as level after a bad start (recovery_level_time)"},
+      {"recovery_settle_error", "m", "distance to the reference counted as settled (recovery_settle_time)"},
   };
   return table;
 }

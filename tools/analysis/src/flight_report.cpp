@@ -6,6 +6,7 @@
 
 #include "flight_parts.hpp"
 #include "sdlqr/analysis/criteria.hpp"
+#include "sdlqr/analysis/trajectory_aborts.hpp"
 
 namespace sdlqr::analysis {
 
@@ -50,6 +51,11 @@ FlightReport analyzeFlight(const logger::FlightLog& log, const mission::Scenario
   detail::measureTiming(log, options, report);
   detail::measureLoad(log, report);
   report.trajectories = trackTrajectories(log, scenario, options.path);
+  RecoveryOptions recovery;
+  recovery.level_tilt_deg = scenario.criterion("recovery_level_tilt_deg", recovery.level_tilt_deg);
+  recovery.settle_error = scenario.criterion("recovery_settle_error", recovery.settle_error);
+  report.recovery = analyzeRecovery(log, scenario, recovery);
+  report.trajectory_aborts = countTrajectoryAborts(log);
   judgeCriteria(report, scenario, options);
   return report;
 }

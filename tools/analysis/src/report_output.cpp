@@ -315,6 +315,29 @@ void writeTrajectories(const FlightReport& r, std::ostream& out) {
   }
 }
 
+// Recovery from an airborne start or a throw, and trajectories the guard aborted.
+void writeStressors(const FlightReport& r, std::ostream& out) {
+  char line[512];
+  if (r.recovery) {
+    const RecoveryReport& v = *r.recovery;
+    std::snprintf(line, sizeof line,
+                  "  recovery from %s at %.2f s (tilt %.0f deg): level after %s, height lost %.2f m, settled after %s\n",
+                  v.throw_start ? "a throw" : "an airborne start", v.start, v.initial_tilt_deg,
+                  format("%.2f s", v.level_time).c_str(), v.height_lost, format("%.2f s", v.settle_time).c_str());
+    out << line;
+    if (v.throw_start) {
+      std::snprintf(line, sizeof line, "  throw released at %.2f s, detected after %s\n", v.release,
+                    format("%.3f s", v.detect_delay).c_str());
+      out << line;
+    }
+  }
+  if (r.trajectory_aborts > 0) {
+    std::snprintf(line, sizeof line, "  trajectories aborted into a hold by the guard: %lld\n",
+                  static_cast<long long>(r.trajectory_aborts));
+    out << line;
+  }
+}
+
 void writeMeasurements(const FlightReport& r, std::ostream& out) {
   char line[512];
   std::snprintf(line, sizeof line, "  estimator (hover): position %s RMS, attitude %s RMS (whole flight %s, %s)\n",
@@ -390,6 +413,7 @@ void writeSummary(const FlightReport& r, std::ostream& out) {
   writeSetpoints(r, out);
   writePulls(r, out);
   writeTrajectories(r, out);
+  writeStressors(r, out);
   writeMeasurements(r, out);
   writeCheckTable(r, out);
   for (const Check& c : r.checks) {

@@ -20,7 +20,7 @@ mission::MissionOptions missionOptions(double command_resend_s) {
 ClosedLoop::ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record,
                        double command_resend_s)
     : record_(record),
-      sim_(config.vehicle, withSeed(config.sim, scenario.seed)),
+      sim_(config.vehicle, withSeed(config.sim, scenario.seed), scenario.sim),
       estimator_(config.estimator),
       lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity, config.faults, config.validation),
       controller_(config.lqr, config.controller, config.faults, config.validation),
@@ -64,11 +64,13 @@ void ClosedLoop::publish(const MotorCommand& m) {
   sim_.onMotorCommand(m);
 }
 
-// The solver first: its GAINS reach the controller before the tick of the same estimate.
+// The solver first: its GAINS reach the controller before the tick of the same estimate; the
+// mission (throw mode) after the controller, so a throw's ARM and GOTO follow that tick.
 void ClosedLoop::publish(const StateEstimate& m) {
   record(log_.state_estimate, m);
   gains_.onStateEstimate(m, *this);
   controller_.onStateEstimate(m, *this);
+  mission_.onStateEstimate(m, *this);
 }
 
 void ClosedLoop::publish(const GainSet& m) {

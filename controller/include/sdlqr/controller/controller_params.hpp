@@ -5,6 +5,7 @@
 
 #include "sdlqr/config/param_table.hpp"
 #include "sdlqr/messages/messages.hpp"
+#include "sdlqr/trajectory/guard.hpp"
 
 namespace sdlqr::controller {
 
@@ -27,6 +28,7 @@ struct ControllerParams {
   // hold instead of waiting on the ground for a take-off.
   double rejoin_height;
   ReferenceMode tracking;  // for trajectories that do not say
+  trajectory::TrajectoryGuardParams guard;  // aborts a trajectory that flies the vehicle away
 
   ControllerParams();
   static const ParamTable<ControllerParams>& declaration();

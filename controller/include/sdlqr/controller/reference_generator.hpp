@@ -37,6 +37,9 @@ class ReferenceGenerator {
   // True from a rejoin until the next command: a TAKEOFF then sets the held height above the ground.
   bool rejoined() const { return rejoined_; }
   const trajectory::TrajectoryTracker& tracker() const { return tracker_; }
+  // Trajectories aborted into a hold by the guard (trajectory/guard.hpp), and why the last was.
+  int64_t guardAborts() const { return guard_aborts_; }
+  trajectory::GuardTrip lastGuardTrip() const { return last_guard_trip_; }
 
  private:
   void startTakeoff(const StateEstimate& estimate, double height);
@@ -61,6 +64,8 @@ class ReferenceGenerator {
   int64_t landed_since_utime_ = -1;
   trajectory::TrajectoryTracker tracker_;
   int64_t trajectory_seq_ = -1;
+  int64_t guard_aborts_ = 0;
+  trajectory::GuardTrip last_guard_trip_ = trajectory::GuardTrip::kNone;
 };
 
 }  // namespace sdlqr::controller

@@ -55,6 +55,7 @@ class StateDependentLqr {
 
   const ControllerStatus& status() const { return status_; }
   const GainMatrix& fallbackGain() const { return fallback_K_; }
+  const ReferenceGenerator& references() const { return references_; }
 
  private:
   const GainMatrix& chooseGain(int64_t now_utime, GainsFreshness& freshness, int64_t& gains_seq);

@@ -7,9 +7,12 @@
 //                    TRAJECTORY through the Outbox, each stamped with the clock and its own
 //                    channel's seq) and the due re-send; a clock not after the last is ignored
 //   onWallTime(now)  the clock watchdog: no newer clock for no_clock_timeout_s -> clockLost()
+//   onStateEstimate  throw mode only (the scenario's throw_mode): a detected throw publishes ARM,
+//                    then GOTO the estimated position (hold there), counted as "throw.detected"
 // Trajectories are generated at construction, so a bad request fails before the flight.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "sdlqr/health/process_health.hpp"
@@ -18,6 +21,7 @@
 #include "sdlqr/mission/command_resender.hpp"
 #include "sdlqr/mission/mission_player.hpp"
 #include "sdlqr/mission/scenario.hpp"
+#include "sdlqr/mission/throw_detector.hpp"
 #include "sdlqr/trajectory/params.hpp"
 
 namespace sdlqr::mission {
@@ -35,6 +39,10 @@ class MissionCore {
 
   void onClock(int64_t utime, Outbox& out);
   void onWallTime(double now_s);
+  void onStateEstimate(const StateEstimate& estimate, Outbox& out);
+  // Whether the bus main needs STATE_EST at all.
+  bool watchesEstimates() const { return throw_detector_.has_value(); }
+  const std::optional<ThrowDetector>& throwDetector() const { return throw_detector_; }
 
   bool finished() const { return now_utime_ >= 0 && player_.finished(now_utime_); }
   bool clockLost() const { return clock_lost_; }
@@ -42,12 +50,15 @@ class MissionCore {
   // Called for every event as it is played (the main's log line); nullptr: none.
   using EventObserver = void (*)(const ScenarioEvent& event, int64_t utime);
   void setObserver(EventObserver observer) { observer_ = observer; }
+  using ThrowObserver = void (*)(const ThrowDetection& detection);
+  void setThrowObserver(ThrowObserver observer) { throw_observer_ = observer; }
 
   ProcessHealth& health() { return health_; }
   const ProcessHealth& health() const { return health_; }
 
  private:
   void play(const ScenarioEvent& event, Outbox& out);
+  void publishCommand(Command command, int64_t utime, Outbox& out);
 
   const Scenario& scenario_;
   MissionOptions options_;
@@ -56,6 +67,10 @@ class MissionCore {
   CommandResender resender_;
   ProcessHealth health_;
   EventObserver observer_ = nullptr;
+  ThrowObserver throw_observer_ = nullptr;
+  std::optional<ThrowDetector> throw_detector_;
+  int64_t throw_armed_utime_ = -1;
+  Counters::Id throws_detected_;
   int64_t now_utime_ = -1;
   // One sequence per channel: subscribers count gaps in seq as lost messages.
   int64_t command_seq_ = 0, disturbance_seq_ = 0, params_seq_ = 0, trajectory_seq_ = 0;
@@ -68,5 +83,7 @@ class MissionCore {
 std::string describeEvent(const ScenarioEvent& event);
 // An EventObserver: "sdlqr-mission: t=  1.000 s  <describeEvent>" on stderr.
 void logEventToStderr(const ScenarioEvent& event, int64_t utime);
+// A ThrowObserver: "sdlqr-mission: t=  3.412 s  throw detected at (...) m, vz ... m/s: arm, hold".
+void logThrowToStderr(const ThrowDetection& detection);
 
 }  // namespace sdlqr::mission

@@ -15,6 +15,8 @@
 //     - {at: 30.0, trajectory: {generator: minsnap_fast, laps: 3, tracking: spatial}}
 //     - {at: 36.0, command: land}
 //   criteria: {jump_settle_error: 0.05, jump_settle_time: 3.0}   # [m], [s], ... (see README)
+//   sim: {plant: {mass_scale: 1.2}, wind: {...}, airborne_start: {...}, throw: {...}}  # sim/stress_params.hpp
+//   throw_mode: {at: 1.0, type: throw}                           # the stack's throw start (throw_detector.hpp)
 
 #include <map>
 #include <string>
@@ -22,13 +24,28 @@
 
 #include "sdlqr/config/config.hpp"
 #include "sdlqr/messages/messages.hpp"
+#include "sdlqr/mission/throw_detector.hpp"
+#include "sdlqr/sim/stress_params.hpp"
 
 namespace sdlqr::mission {
 
 // Unset optional fields (negative) take the vehicle file's `trajectory:` settings.
+//
+// Aggressive closed paths at a user-set speed (circle, lemniscate, or min-snap through the
+// waypoints of a YAML/CSV file) are checked for feasibility when the scenario is loaded: beyond
+// the vehicle they are refused with the report (on_infeasible: refuse), or flown at the highest
+// feasible speed (on_infeasible: scale).
+//   {generator: circle, speed: 3.0, size: 1.0, center: [0, 0, 1.5], v_max: 4.0, on_infeasible: scale}
+//   {generator: waypoints, waypoints: path.yaml, speed: 2.0}
 struct TrajectoryRequest {
-  std::string generator;   // minsnap_fast, minsnap_slow, ellipse, or csv
+  std::string generator;   // minsnap_fast, minsnap_slow, ellipse, csv, circle, lemniscate or waypoints
   std::string csv_path;    // for generator csv, resolved against the scenario folder
+  std::string waypoints_path;  // for generator waypoints (YAML or CSV), resolved likewise
+  double speed = -1.0;     // [m/s] peak speed of circle, lemniscate, waypoints (the file's v_max if unset)
+  double size = 1.0;       // [m] circle radius, lemniscate half-width
+  Vec3 center = Vec3(0.0, 0.0, 1.5);  // [m] of circle and lemniscate
+  double v_max = -1.0;     // [m/s] speed limit of the feasibility check (unset: the requested speed)
+  bool scale_if_infeasible = false;  // on_infeasible: scale (else refuse)
   int laps = -1;           // [-] laps of the paper's paths
   ReferenceMode tracking = ReferenceMode::kSpatial;
   double height_offset = -1.0;  // [m] added to the paper's waypoint heights
@@ -56,6 +73,8 @@ struct Scenario {
   double rate = 1.0;         // [-]
   std::vector<ScenarioEvent> events;  // sorted by time
   std::map<std::string, double> criteria;
+  sim::SimStress sim;          // the simulated world only: the stack flies the vehicle file
+  ThrowModeParams throw_mode;  // the stack: wait for a throw with the motors stopped
 
   // Throws ConfigError naming the key ("events[3].position") on any invalid entry.
   static Scenario load(const std::string& path);

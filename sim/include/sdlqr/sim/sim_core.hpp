@@ -21,8 +21,9 @@ namespace sdlqr::sim {
 
 class SimCore {
  public:
-  // Throws std::invalid_argument when the parameters are invalid or inconsistent.
-  SimCore(const VehicleParams& vehicle, const SimParams& params);
+  // Throws std::invalid_argument when the parameters are invalid or inconsistent. `stress`: the
+  // scenario's simulated world (sim/stress_params.hpp), the same on the bus and in-process.
+  SimCore(const VehicleParams& vehicle, const SimParams& params, const SimStress& stress = {});
 
   RejectReason onMotorCommand(const MotorCommand& command);
   RejectReason onDisturbance(const Disturbance& disturbance);

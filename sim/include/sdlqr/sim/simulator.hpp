@@ -16,7 +16,10 @@
 #include "sdlqr/sim/rigid_body.hpp"
 #include "sdlqr/sim/rotors.hpp"
 #include "sdlqr/sim/sim_params.hpp"
+#include "sdlqr/sim/stress_params.hpp"
+#include "sdlqr/sim/throw_hand.hpp"
 #include "sdlqr/sim/vio_model.hpp"
+#include "sdlqr/sim/wind.hpp"
 
 namespace sdlqr::sim {
 
@@ -29,9 +32,10 @@ struct StepOutput {
 
 class Simulator {
  public:
-  // Throws std::invalid_argument when the parameters are invalid or inconsistent.
+  // Throws std::invalid_argument when the parameters are invalid or inconsistent. `stress` is the
+  // scenario's world (plant mismatch, wind, airborne start, throw); its defaults change nothing.
   Simulator(const VehicleParams& vehicle, const SimParams& params);  // seed from params.seed
-  Simulator(const VehicleParams& vehicle, const SimParams& params, uint64_t seed);
+  Simulator(const VehicleParams& vehicle, const SimParams& params, uint64_t seed, const SimStress& stress = {});
 
   // Latest command wins, from the next step on. A command failing checkMotorCommand is ignored.
   RejectReason setMotorCommand(const MotorCommand& command);
@@ -49,8 +53,13 @@ class Simulator {
   const BodyState& body() const { return body_; }
   bool onGround() const { return on_ground_; }
   bool crashed() const { return crashed_; }
-  // Per-rotor thrust [N] produced now: motor lag output times the battery's thrust scale.
-  Vec4 rotorThrust() const { return battery_.thrustScale() * motors_.thrust(); }
+  // Per-rotor thrust [N] produced now: motor lag output times the battery's thrust scale and the
+  // plant's thrust coefficient.
+  Vec4 rotorThrust() const { return thrustScale() * motors_.thrust(); }
+  // [m/s] world, the air's velocity at the vehicle during the last step.
+  const Vec3& windVelocity() const { return wind_velocity_; }
+  // The true airframe (the vehicle file with the scenario's plant override).
+  const VehicleParams& plant() const { return plant_; }
   const Vec3& acceleration() const { return acceleration_; }
   const Battery& battery() const { return battery_; }
   const ImuModel& imu() const { return imu_; }
@@ -60,8 +69,13 @@ class Simulator {
   void setBodyState(const BodyState& state, const Vec4& motor_thrust = Vec4::Zero());
 
  private:
-  VehicleParams vehicle_;
+  double thrustScale() const { return battery_.thrustScale() * stress_.plant.thrust_scale; }
+  Wrench wrenchOf(const Vec4& thrust, const BodyState& s, int64_t start_utime) const;
+
+  VehicleParams vehicle_;  // what the stack assumes: MOTOR_CMD checks, the battery's calibration
   SimParams params_;
+  SimStress stress_;
+  VehicleParams plant_;    // what flies
   BodyProperties body_properties_;
   RotorWrench rotor_wrench_;
   MotorLag motors_;
@@ -69,6 +83,8 @@ class Simulator {
   DisturbanceSet disturbances_;
   ImuModel imu_;
   VioModel vio_;
+  Wind wind_;
+  ThrowHand hand_;
   double dt_;
   int64_t period_us_;
   int imu_decimation_;
@@ -78,6 +94,7 @@ class Simulator {
   BodyState body_;
   Vec3 acceleration_ = Vec3::Zero();
   Vec3 external_force_ = Vec3::Zero();
+  Vec3 wind_velocity_ = Vec3::Zero();
   bool on_ground_ = true;
   bool crashed_ = false;
   int64_t truth_seq_ = 0;

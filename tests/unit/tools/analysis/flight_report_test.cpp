@@ -232,6 +232,9 @@ analysis::FlightReport reportOfOnes() {
   r.max_tilt_deg = r.touchdown_speed = 1.0;
   r.rate_cmd_jitter_ms.p99 = 1.0;
   r.stack_cpu_relative = r.state_to_command_relative = 1.0;
+  r.recovery = analysis::RecoveryReport{};
+  r.recovery->detect_delay = r.recovery->level_time = r.recovery->height_lost = r.recovery->settle_time = 1.0;
+  r.trajectory_aborts = 1;
   r.processes.push_back({});
   r.calibration = calibration(20.0, 140.0);
   return r;
@@ -257,6 +260,21 @@ TEST(CriteriaTable, EveryFlightCriterionFailsBeyondItsLimitAndPassesWithin) {
   analysis::judgeCriteria(report, mission::Scenario{}, analysis::AnalysisOptions{});
   EXPECT_FALSE(findCheck(report, "nonfinite_messages")->pass);
   EXPECT_FALSE(findCheck(report, "crashed")->pass);
+}
+
+// Without an airborne start or a throw there is no recovery: its criteria fail, never pass empty.
+TEST(CriteriaTable, RecoveryCriteriaFailWithoutARecovery) {
+  analysis::FlightReport report = reportOfOnes();
+  report.recovery.reset();
+  mission::Scenario scenario;
+  for (const char* key : {"recovery_level_time", "recovery_height_lost", "recovery_settle_time", "throw_detect_delay"}) {
+    scenario.criteria[key] = 100.0;
+  }
+  analysis::judgeCriteria(report, scenario, analysis::AnalysisOptions{});
+  for (const char* key : {"recovery_level_time", "recovery_height_lost", "recovery_settle_time", "throw_detect_delay"}) {
+    ASSERT_NE(findCheck(report, key), nullptr) << key;
+    EXPECT_FALSE(findCheck(report, key)->pass) << key;
+  }
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sdlqr/analysis/path_tracking.hpp"
+#include "sdlqr/analysis/recovery.hpp"
 #include "sdlqr/calibrate/calibration.hpp"
 #include "sdlqr/math/types.hpp"
 #include "sdlqr/logger/flight_log.hpp"
@@ -97,6 +98,8 @@ struct FlightReport {
   std::vector<PullWindow> pulls;
   double return_error = kNotReached;  // [m] back after a pull within this (pull_return_error)
   std::vector<PathTrackingReport> trajectories;  // one per tracked TRAJECTORY upload
+  std::optional<RecoveryReport> recovery;        // airborne start or throw (recovery.hpp)
+  int64_t trajectory_aborts = 0;                 // by the controller's guard (trajectory_aborts.hpp)
   EstimatorAccuracy estimator;
   double imu_rate_hz = 0.0;        // by simulation time
   double state_est_rate_hz = 0.0;

@@ -1,0 +1,281 @@
+// The stressors of config/scenarios/ flown in-process (the cores the bus runs): plant mismatch,
+// wind with gusts, airborne starts up to upside down, a throw — each measured, and each check shown
+// failing on a flight that went wrong.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "sdlqr/analysis/flight_report.hpp"
+#include "sdlqr/closedloop/closed_loop.hpp"
+
+namespace sdlqr {
+namespace {
+
+const std::string kSourceDir = SDLQR_SOURCE_DIR;
+
+mission::Scenario scenarioNamed(const std::string& name) {
+  return mission::Scenario::load(kSourceDir + "/config/scenarios/" + name + ".yaml");
+}
+
+struct Flight {
+  logger::FlightLog log;
+  analysis::FlightReport report;
+  int64_t throws_detected = 0;
+};
+
+Flight fly(const mission::Scenario& scenario) {
+  const closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);
+  closedloop::ClosedLoop loop(config, scenario);
+  loop.run();
+  Flight f;
+  f.log = loop.log();
+  f.report = analysis::analyzeFlight(f.log, scenario);
+  const Counters& counters = loop.mission().health().counters();
+  f.throws_detected = counters.value(counters.find("throw.detected"));
+  return f;
+}
+
+const analysis::Check* checkNamed(const analysis::FlightReport& r, const std::string& key) {
+  for (const analysis::Check& c : r.checks) {
+    if (c.key == key) return &c;
+  }
+  return nullptr;
+}
+
+void expectAllPass(const Flight& f) {
+  for (const analysis::Check& c : f.report.checks) {
+    EXPECT_TRUE(c.pass) << f.report.scenario << ": " << c.name << " = " << c.value << " (limit " << c.limit << ")";
+  }
+}
+
+// Mean z error of the truth against the reference over [from, to] s.
+double meanHeightError(const logger::FlightLog& log, double from, double to) {
+  double sum = 0.0;
+  int n = 0;
+  for (const SimTruth& s : log.sim_truth.messages) {
+    const double t = 1e-6 * static_cast<double>(s.utime);
+    if (t < from || t > to) continue;
+    const auto i = log.reference.indexAtOrBefore(s.utime);
+    if (i < 0) continue;
+    sum += s.position[2] - position(log.reference[static_cast<size_t>(i)].x)[2];
+    ++n;
+  }
+  return n ? sum / n : NAN;
+}
+
+// Mean horizontal distance of the truth to the reference over [from, to] s.
+double meanHorizontalError(const logger::FlightLog& log, double from, double to) {
+  double sum = 0.0;
+  int n = 0;
+  for (const SimTruth& s : log.sim_truth.messages) {
+    const double t = 1e-6 * static_cast<double>(s.utime);
+    const auto i = log.reference.indexAtOrBefore(s.utime);
+    if (t < from || t > to || i < 0) continue;
+    sum += (s.position - position(log.reference[static_cast<size_t>(i)].x)).head<2>().norm();
+    ++n;
+  }
+  return n ? sum / n : NAN;
+}
+
+void printRecovery(const Flight& f) {
+  ASSERT_TRUE(f.report.recovery.has_value());
+  const analysis::RecoveryReport& r = *f.report.recovery;
+  std::cout << f.report.scenario << ": initial tilt " << r.initial_tilt_deg << " deg, level after " << r.level_time
+            << " s, height lost " << r.height_lost << " m, settled after " << r.settle_time << " s"
+            << (r.throw_start ? ", detected " + std::to_string(r.detect_delay) + " s after release" : "")
+            << (f.report.crashed ? ", CRASHED" : "") << "\n";
+}
+
+// GIVEN the same hover flown on the vehicle file's mass and on a plant 20 % heavier THEN the
+// heavier one hangs measurably lower in the same hold (the controller assumes the file's mass).
+TEST(Stressors, MassMismatchChangesTheHoverMeasurably) {
+  const mission::Scenario heavy = scenarioNamed("mass_plus20");
+  mission::Scenario nominal = heavy;
+  nominal.sim.plant = sim::PlantOverride();
+  const Flight a = fly(nominal);
+  const Flight b = fly(heavy);
+  const double nominal_error = meanHeightError(a.log, 6.0, 9.0);
+  const double heavy_error = meanHeightError(b.log, 6.0, 9.0);
+  std::cout << "hover z error, 6-9 s: nominal mass " << nominal_error << " m, +20 % mass " << heavy_error << " m\n";
+  EXPECT_LT(heavy_error, nominal_error - 0.02);
+  expectAllPass(b);
+}
+
+// The gusts are drawn from the scenario's seed: the same seed flies the same flight bit for bit,
+// another seed other gusts.
+TEST(Stressors, WindAndGustsRepeatForASeed) {
+  const mission::Scenario windy = scenarioNamed("wind_gusts");
+  const Flight a = fly(windy);
+  const Flight b = fly(windy);
+  mission::Scenario other_seed = windy;
+  other_seed.seed += 1;
+  const Flight c = fly(other_seed);
+  ASSERT_EQ(a.log.sim_truth.size(), b.log.sim_truth.size());
+  for (size_t i = 0; i < a.log.sim_truth.size(); ++i) {
+    ASSERT_EQ(a.log.sim_truth[i].position, b.log.sim_truth[i].position) << "sample " << i;
+  }
+  ASSERT_EQ(a.log.sim_truth.size(), c.log.sim_truth.size());
+  double largest_difference = 0.0;
+  for (size_t i = 0; i < a.log.sim_truth.size(); ++i) {
+    largest_difference =
+        std::max(largest_difference, (a.log.sim_truth[i].position - c.log.sim_truth[i].position).norm());
+  }
+  EXPECT_GT(largest_difference, 0.02);
+  // The steady wind pushes downwind: the hold sits measurably downwind of no wind.
+  mission::Scenario calm = windy;
+  calm.sim.wind = sim::WindParams();
+  const Flight d = fly(calm);
+  const double windy_error = meanHorizontalError(a.log, 6.0, 12.0);
+  const double calm_error = meanHorizontalError(d.log, 6.0, 12.0);
+  std::cout << "wind_gusts: mean horizontal hold error 6-12 s " << windy_error << " m (calm " << calm_error
+            << " m), seeds differ by up to " << largest_difference << " m\n";
+  EXPECT_GT(windy_error, calm_error + 0.05);
+  expectAllPass(a);
+}
+
+// 60 degrees: every recovery criterion of the scenario passes.
+TEST(Stressors, AirborneStartAt60DegreesRecovers) {
+  const Flight f = fly(scenarioNamed("recover_60"));
+  printRecovery(f);
+  expectAllPass(f);
+}
+
+// 120 and 180 degrees (upside down): the default controller rights the vehicle and never touches
+// the ground, but more slowly than the scenarios ask (their level-within-3-s check fails: the
+// figures are in the README). Checked here: no crash, level for good within the flight, the
+// ground never reached.
+TEST(Stressors, AirborneStartsAt120And180DegreesAreRightedWithoutTouchingTheGround) {
+  for (const char* name : {"recover_120", "recover_180"}) {
+    const mission::Scenario scenario = scenarioNamed(name);
+    const Flight f = fly(scenario);
+    printRecovery(f);
+    EXPECT_FALSE(f.report.crashed) << name;
+    EXPECT_TRUE(std::isfinite(f.report.recovery->level_time)) << name;
+    EXPECT_LT(f.report.recovery->height_lost, scenario.sim.airborne_start.position.z() - 1.0) << name;
+    const analysis::Check* height = checkNamed(f.report, "recovery_height_lost");
+    ASSERT_NE(height, nullptr);
+    EXPECT_TRUE(height->pass) << name;
+  }
+}
+
+// Negative: the same airborne start never armed falls to the ground; every recovery check fails.
+TEST(Stressors, AnAirborneStartNeverArmedFailsTheRecoveryChecks) {
+  mission::Scenario unarmed = scenarioNamed("recover_60");
+  unarmed.events.clear();
+  const Flight f = fly(unarmed);
+  for (const char* key : {"recovery_level_time", "recovery_settle_time", "recovery_height_lost"}) {
+    const analysis::Check* c = checkNamed(f.report, key);
+    ASSERT_NE(c, nullptr) << key;
+    EXPECT_FALSE(c->pass) << key << " = " << c->value;
+  }
+}
+
+TEST(Stressors, ThrowIsDetectedArmedAndRecovered) {
+  const Flight f = fly(scenarioNamed("throw"));
+  printRecovery(f);
+  EXPECT_EQ(f.throws_detected, 1);
+  expectAllPass(f);
+}
+
+// Negative: thrown without throw mode, nothing arms the motors: the throw checks fail.
+TEST(Stressors, AThrowWithoutThrowModeFailsTheThrowChecks) {
+  mission::Scenario no_mode = scenarioNamed("throw");
+  no_mode.throw_mode = mission::ThrowModeParams();
+  const Flight f = fly(no_mode);
+  EXPECT_EQ(f.throws_detected, 0);
+  for (const char* key : {"throw_detect_delay", "recovery_level_time", "recovery_settle_time"}) {
+    const analysis::Check* c = checkNamed(f.report, key);
+    ASSERT_NE(c, nullptr) << key;
+    EXPECT_FALSE(c->pass) << key << " = " << c->value;
+  }
+}
+
+// Negative: throw mode armed through a whole normal flight (take-off, 1 m jumps up and down, a
+// pull, the landing) never sees a throw.
+TEST(Stressors, NoThrowIsDetectedInANormalFlight) {
+  mission::Scenario flight = scenarioNamed("hover_jumps");
+  flight.throw_mode.at = 0.0;
+  const Flight f = fly(flight);
+  EXPECT_EQ(f.throws_detected, 0);
+  EXPECT_GT(f.report.setpoints.size(), 6u);  // the flight flew
+}
+
+// A fast closed path the vehicle can fly is tracked to the end of its time, never aborted; the
+// lemniscate asked beyond the vehicle flies time-scaled.
+TEST(Stressors, FeasibleFastPathsAreFlownAndNotAborted) {
+  const Flight f = fly(scenarioNamed("aggressive_path"));
+  ASSERT_EQ(f.report.trajectories.size(), 2u);
+  for (const analysis::PathTrackingReport& t : f.report.trajectories) {
+    std::cout << t.label << ": path error RMS " << t.path_error_rms << " m, max " << t.path_error_max << " m, "
+              << t.laps << " laps\n";
+    EXPECT_GT(t.laps, 1.0);
+  }
+  EXPECT_EQ(f.report.trajectory_aborts, 0);
+  expectAllPass(f);
+}
+
+// A reference the vehicle cannot follow (a foreign TRAJECTORY running off at 12 m/s towards the
+// geofence) is aborted by the guard into a hold where the vehicle is: counted in the controller's
+// HEARTBEAT counters, seen by the analysis, and the vehicle stops well inside the fence.
+TEST(Stressors, GuardAbortsARunawayTrajectoryIntoAHold) {
+  mission::Scenario hover = scenarioNamed("hover_steady");
+  hover.duration = 16.0;
+  const closedloop::StackConfig config = closedloop::StackConfig::load(hover.vehicle_path);
+  closedloop::ClosedLoop loop(config, hover);
+  while (loop.utime() < 8'000'000) loop.step();
+  const SimTruth before = loop.log().sim_truth.messages.back();
+  Trajectory runaway;
+  runaway.utime = loop.utime();
+  runaway.seq = 0;
+  runaway.tracking = ReferenceMode::kTemporal;
+  for (int k = 0; k <= 60; ++k) {
+    TrajectorySample s;
+    s.t = 0.05 * k;
+    s.x = makeState(before.position + Vec3(12.0 * s.t, 0, 0), identityQuat(), Vec3(12.0, 0, 0));
+    s.u = makeInput(Vec3::Zero(), kDefaultGravity);
+    runaway.samples.push_back(s);
+  }
+  loop.inject(runaway);
+  loop.run();
+  const Counters& counters = loop.controller().health().counters();
+  EXPECT_EQ(counters.value(counters.find("trajectory.guard_abort")), 1);
+  const analysis::FlightReport report = analysis::analyzeFlight(loop.log(), hover);
+  EXPECT_EQ(report.trajectory_aborts, 1);
+  double farthest = 0.0;
+  for (const SimTruth& s : loop.log().sim_truth.messages) {
+    farthest = std::max(farthest, (s.position - before.position).norm());
+  }
+  const SimTruth after = loop.log().sim_truth.messages.back();
+  std::cout << "runaway: farthest " << farthest << " m from the hold, ends " << (after.position - before.position).norm()
+            << " m from it\n";
+  EXPECT_LT(farthest, 2.0);
+  EXPECT_FALSE(report.crashed);
+}
+
+// An infeasible path is refused when the scenario is loaded, with the report in one line naming
+// the event; the same path with on_infeasible: scale loads.
+TEST(Stressors, InfeasiblePathIsRefusedWithTheFeasibilityReport) {
+  mission::Scenario s = scenarioNamed("aggressive_path");
+  mission::ScenarioEvent* lemniscate = nullptr;
+  for (mission::ScenarioEvent& e : s.events) {
+    if (e.kind == mission::ScenarioEvent::Kind::kTrajectory && e.trajectory.generator == "lemniscate") lemniscate = &e;
+  }
+  ASSERT_NE(lemniscate, nullptr);
+  const closedloop::StackConfig config = closedloop::StackConfig::load(s.vehicle_path);
+  lemniscate->trajectory.scale_if_infeasible = false;
+  try {
+    closedloop::ClosedLoop loop(config, s);
+    ADD_FAILURE() << "an infeasible lemniscate was accepted";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    std::cout << what << "\n";
+    EXPECT_NE(what.find("events[5].trajectory"), std::string::npos) << what;
+    EXPECT_NE(what.find("beyond the vehicle"), std::string::npos) << what;
+    EXPECT_NE(what.find("feasible up to"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace sdlqr
