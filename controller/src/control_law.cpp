@@ -33,6 +33,7 @@ ControlOutput applyControlLaw(const GainMatrix& K, const Quat& q_lin, const Stat
     bodyRate(out.u) *= limits.omega_max / rate_norm;
     out.rate_saturated = true;
   }
+  out.thrust_demand = out.u[kThrust];
   const double thrust = std::clamp(out.u[kThrust], limits.c_min, limits.c_max);
   out.thrust_saturated = thrust != out.u[kThrust];
   out.u[kThrust] = thrust;

@@ -156,6 +156,7 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
   command.gains_seq = gains_seq;
   command.reference_seq = reference.seq;
   command.saturated = static_cast<int8_t>((control.rate_saturated ? 1 : 0) | (control.thrust_saturated ? 2 : 0));
+  command.thrust_demand = control.thrust_demand;
   command.gains_status = freshness;
 
   last_thrust_ = command.thrust;

@@ -39,11 +39,8 @@ int main(int argc, char** argv) {
     } catch (const std::exception& e) {
       throw std::invalid_argument(e.what());
     }
-    // Thrust limits of the vehicle the scenario flew (criterion thrust_limit_violations_max).
-    const LqrParams lqr = LqrParams::load(loadVehicleConfig(scenario.vehicle_path).child("lqr"));
+    // The saturation criteria's limits come from the scenario's vehicle file (analyzeFlight).
     analysis::AnalysisOptions options;
-    options.path.thrust_min = lqr.c_min;
-    options.path.thrust_max = lqr.c_max;
     if (!calibration_path.empty()) options.calibration = calibrate::Calibration::load(calibration_path);
     const analysis::FlightReport report = analysis::analyzeFlight(log, scenario, options);
     analysis::writeSummary(report, std::cout);

@@ -1,6 +1,7 @@
 // sdlqr-faultcheck: what a fault test measured, from its flight log. Prints each process's last
 // HEARTBEAT counters that are rejections, watchdogs or injected faults, and fails unless every
-// --require'd counter is non-zero in some process and every process kept its heartbeat to the end.
+// --require'd counter is non-zero in some process and every process kept its heartbeat to the end
+// of the log (liveness.hpp: no gap and no silence at the end longer than --max-silence).
 
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "sdlqr/config/cli.hpp"
+#include "sdlqr/faults/liveness.hpp"
 #include "sdlqr/faults/outage_check.hpp"
 #include "sdlqr/logger/flight_log.hpp"
 
@@ -28,6 +30,24 @@ std::pair<int64_t, int64_t> parseOutage(const std::string& option, const std::st
 }
 
 const char* verdict(bool ok) { return ok ? "ok  " : "FAIL"; }
+
+// Prints each finding with its verdict; true when all passed.
+bool report(const std::vector<faults::Finding>& findings) {
+  for (const faults::Finding& f : findings) std::cout << verdict(f.ok) << " " << f.text << "\n";
+  return faults::allOk(findings);
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> names;
+  size_t start = 0;
+  while (start <= text.size() && !text.empty()) {
+    size_t end = text.find(',', start);
+    if (end == std::string::npos) end = text.size();
+    if (end > start) names.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return names;
+}
 
 bool checkGains(const logger::FlightLog& log, const std::string& text, double fallback_timeout, double max_resume) {
   const auto [kill, restart] = parseOutage("--gains-outage", text);
@@ -47,21 +67,9 @@ bool checkGains(const logger::FlightLog& log, const std::string& text, double fa
   return fallback_ok && resume_ok;
 }
 
-bool checkEstimator(const logger::FlightLog& log, const std::string& text, double max_delay, double max_tilt,
-                    double max_touchdown_speed) {
+bool checkEstimator(const logger::FlightLog& log, const std::string& text, const faults::EstimatorLimits& limits) {
   const auto [kill, restart] = parseOutage("--estimator-outage", text);
-  const faults::EstimatorOutage e = faults::measureEstimatorOutage(log, kill, restart);
-  const bool failsafe_ok = e.failsafe_delay_s >= 0.0 && e.failsafe_delay_s <= max_delay;
-  const bool upright_ok = e.max_tilt_deg < max_tilt && !e.crashed;
-  const bool landing_ok = e.touchdown_utime >= 0 && e.touchdown_speed < max_touchdown_speed;
-  std::cout << verdict(failsafe_ok) << " estimator outage: last STATE_EST t=" << 1e-6 * e.last_estimate_utime
-            << " s, lowlevel failsafe " << e.failsafe_delay_s << " s later (limit " << max_delay << " s)\n";
-  std::cout << verdict(upright_ok) << " estimator outage: max tilt " << e.max_tilt_deg << " deg (limit " << max_tilt
-            << " deg)" << (e.crashed ? ", CRASHED" : "") << "\n";
-  std::cout << verdict(landing_ok) << " estimator outage: touchdown at t=" << 1e-6 * e.touchdown_utime << " s at "
-            << e.touchdown_speed << " m/s (limit " << max_touchdown_speed << " m/s), "
-            << (e.disarmed_after_touchdown ? "disarmed" : "not disarmed") << " before the restart\n";
-  return failsafe_ok && upright_ok && landing_ok;
+  return report(faults::judgeEstimatorOutage(faults::measureEstimatorOutage(log, kill, restart), limits));
 }
 
 bool checkController(const logger::FlightLog& log, const std::string& text, const std::string& setpoint_text,
@@ -101,7 +109,14 @@ int main(int argc, char** argv) {
     ArgParser parser("sdlqr-faultcheck",
                      "Reads a flight log and prints the rejection, watchdog and fault counters of every process.");
     parser.addOption("--require", &required_text, "A,B,...", "counters that must be > 0 in some process");
-    parser.addOption("--max-silence", &max_silence, "S", "longest heartbeat gap of any process, wall time (default 2.5)");
+    parser.addOption("--max-silence", &max_silence, "S",
+                     "longest heartbeat gap of any process, and longest silence before the end of the log,\n"
+                     "wall time (default 2.5)");
+    std::string expected_text, may_stop_text = "sdlqr-fuzz-publisher";
+    parser.addOption("--expect", &expected_text, "A,B,...", "processes that must have sent heartbeats");
+    parser.addOption("--may-stop", &may_stop_text, "A,B,...",
+                     "processes that may end before the log does, with a STOPPING heartbeat\n"
+                     "(default sdlqr-fuzz-publisher)");
     parser.addOption("--hover", &hover_text, "T0,T1,X,Y,Z",
                      "max |truth - (X,Y,Z)| over simulation time [T0, T1] s must stay below --max-hover-error");
     parser.addOption("--max-hover-error", &max_hover_error, "M", "default 0.1 m");
@@ -119,7 +134,8 @@ int main(int argc, char** argv) {
                      "simulation time (two 10 Hz solve periods and an estimate)");
     parser.addOption("--estimator-outage", &estimator_outage, "KILL_US,RESTART_US",
                      "sdlqr-estimator killed/restarted: the lowlevel failsafe engages within --max-failsafe-delay,\n"
-                     "tilt stays below --max-tilt, touchdown slower than --max-touchdown-speed");
+                     "tilt stays below --max-tilt, touchdown slower than --max-touchdown-speed, disarmed on the\n"
+                     "ground, and never armed again to the end of the log (the mission re-sends its TAKEOFF)");
     parser.addOption("--max-failsafe-delay", &max_failsafe_delay, "S", "default 0.2 s of simulation time");
     parser.addOption("--max-tilt", &max_tilt, "DEG", "default 30");
     parser.addOption("--max-touchdown-speed", &max_touchdown_speed, "M_S", "default 1.0");
@@ -144,21 +160,12 @@ int main(int argc, char** argv) {
     if (!controller_outage.empty() && setpoint_text.empty()) throw std::invalid_argument("--controller-outage needs --setpoint");
     const logger::FlightLog log = logger::FlightLog::load(positional[0], vehicle);
 
+    // Each process's own last heartbeat: a forged one (the fuzz flight's) could report any counter.
+    const faults::Liveness alive = faults::measureLiveness(log);
     std::map<std::string, const logger::HeartbeatRecord*> last;
-    std::map<std::string, std::pair<int64_t, int64_t>> first_last_receive;  // wall us
-    std::map<std::string, double> longest_gap_s;
-    for (size_t i = 0; i < log.heartbeat.size(); ++i) {
-      const logger::HeartbeatRecord& hb = log.heartbeat[i];
-      const int64_t t = log.heartbeat.receive_utime[i];
-      auto [it, inserted] = first_last_receive.try_emplace(hb.process, t, t);
-      if (!inserted) {
-        longest_gap_s[hb.process] = std::max(longest_gap_s[hb.process], 1e-6 * static_cast<double>(t - it->second.second));
-        it->second.second = t;
-      }
-      last[hb.process] = &hb;
+    for (const faults::ProcessLiveness& p : alive.processes) {
+      if (p.last_index >= 0) last[p.process] = &log.heartbeat[static_cast<size_t>(p.last_index)];
     }
-    int64_t log_end = 0;
-    for (const auto& [process, times] : first_last_receive) log_end = std::max(log_end, times.second);
 
     bool ok = true;
     std::cout << "log: " << log.file.events << " events, " << log.file.file_bytes << " bytes, "
@@ -168,23 +175,23 @@ int main(int argc, char** argv) {
     std::map<std::string, int64_t> totals;
     for (const auto& [process, hb] : last) {
       std::cout << process << ": rejected " << hb->rejected << ", dropped " << hb->dropped << ", errors " << hb->errors
-                << ", last heartbeat " << logger::processStateName(hb->state) << ", longest heartbeat gap "
-                << longest_gap_s[process] << " s\n";
+                << ", last heartbeat " << logger::processStateName(hb->state) << "\n";
       for (const auto& [name, value] : hb->counters) {
         totals[name] += value;
         const bool interesting = name.rfind("reject.", 0) == 0 || name.rfind("watchdog.", 0) == 0 ||
                                  name.rfind("fault.", 0) == 0 || name.rfind("fuzz.", 0) == 0;
         if (interesting && value != 0) std::cout << "    " << name << " " << value << "\n";
       }
-      // A process killed on purpose is silent for its outage.
-      const bool killed = (process == "sdlqr-gains" && !gains_outage.empty()) ||
-                          (process == "sdlqr-estimator" && !estimator_outage.empty()) ||
-                          (process == "sdlqr-controller" && !controller_outage.empty());
-      if (process != "sdlqr-fuzz-publisher" && !killed && longest_gap_s[process] > max_silence) {
-        std::cout << "FAIL " << process << ": heartbeat silent for " << longest_gap_s[process] << " s (stalled?)\n";
-        ok = false;
-      }
     }
+    faults::LivenessRules liveness;
+    liveness.max_silence_s = max_silence;
+    liveness.expected = splitList(expected_text);
+    liveness.may_stop = splitList(may_stop_text);
+    // A process killed on purpose is silent for its outage; restarted, it must beat to the end.
+    if (!gains_outage.empty()) liveness.killed.push_back("sdlqr-gains");
+    if (!estimator_outage.empty()) liveness.killed.push_back("sdlqr-estimator");
+    if (!controller_outage.empty()) liveness.killed.push_back("sdlqr-controller");
+    ok = report(faults::judgeLiveness(alive, liveness)) && ok;
     if (!hover_text.empty()) {
       double v[5] = {};
       if (std::sscanf(hover_text.c_str(), "%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4]) != 5) {
@@ -209,20 +216,14 @@ int main(int argc, char** argv) {
                 << (crashed ? ", CRASHED" : "") << "\n";
       ok = ok && samples > 0 && worst < max_hover_error && !crashed;
     }
-    size_t start = 0;
-    while (start <= required_text.size() && !required_text.empty()) {
-      size_t end = required_text.find(',', start);
-      if (end == std::string::npos) end = required_text.size();
-      const std::string name = required_text.substr(start, end - start);
-      start = end + 1;
-      if (name.empty()) continue;
+    for (const std::string& name : splitList(required_text)) {
       const int64_t total = totals.count(name) ? totals[name] : 0;
       std::cout << (total > 0 ? "ok   " : "FAIL ") << name << " = " << total << " over all processes\n";
       ok = ok && total > 0;
     }
     if (!gains_outage.empty()) ok = checkGains(log, gains_outage, fallback_timeout, max_gains_resume) && ok;
     if (!estimator_outage.empty()) {
-      ok = checkEstimator(log, estimator_outage, max_failsafe_delay, max_tilt, max_touchdown_speed) && ok;
+      ok = checkEstimator(log, estimator_outage, {max_failsafe_delay, max_tilt, max_touchdown_speed}) && ok;
     }
     if (!controller_outage.empty()) {
       ok = checkController(log, controller_outage, setpoint_text, settle_until, return_tolerance, max_return,

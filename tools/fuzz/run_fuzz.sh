@@ -2,21 +2,20 @@
 # Builds the libFuzzer harnesses with clang (in BUILD_DIR/fuzz, from BUILD_DIR's generated headers)
 # and runs each for a bounded time on its corpus (kept in BUILD_DIR/fuzz/corpus_*, so coverage
 # accumulates over runs). Prints executions and coverage; fails on any finding (the crashing
-# input is left in BUILD_DIR/fuzz/artifacts/). Exit 77 (ctest: skipped) without clang/libFuzzer.
+# input is left in BUILD_DIR/fuzz/artifacts/). Without clang/libFuzzer: skipped (exit 77), failed
+# with CI=true (tests/support/prerequisite.sh).
 #   tools/fuzz/run_fuzz.sh BUILD_DIR [SECONDS_PER_HARNESS (default 20)]
 set -uo pipefail
 build="${1:?usage: tools/fuzz/run_fuzz.sh BUILD_DIR [SECONDS]}"
 seconds="${2:-20}"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+# shellcheck source=../../tests/support/prerequisite.sh
+. "$root/tests/support/prerequisite.sh"
 clang="${SDLQR_FUZZ_CXX:-$(command -v clang++ || true)}"
-if [ -z "$clang" ]; then
-  echo "run_fuzz: SKIPPED: no clang++ (install clang libclang-rt-14-dev, or ./sdlqr setup)"
-  exit 77
-fi
+[ -n "$clang" ] || missing_prerequisite "run_fuzz: clang++" "install clang libclang-rt-14-dev, or ./sdlqr setup"
 if ! echo 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }' |
      "$clang" -x c++ -fsanitize=fuzzer - -o /dev/null 2>/dev/null; then
-  echo "run_fuzz: SKIPPED: $clang cannot link libFuzzer (install libclang-rt-14-dev)"
-  exit 77
+  missing_prerequisite "run_fuzz: libFuzzer for $clang" "install libclang-rt-14-dev, or ./sdlqr setup"
 fi
 out="$build/fuzz"
 if [ ! -f "$out/CMakeCache.txt" ]; then

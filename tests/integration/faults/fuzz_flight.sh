@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A hostile publisher on the bus mid-hover: sdlqr-fuzz-publisher floods every channel at 1 kHz for
 # 10 s (random bytes, truncated, oversized, wrong fingerprint, NaN/Inf, huge values, replays).
-# Pass: no process crashes or stalls (launcher exit 0, heartbeats never silent > 2.5 s), hover
+# Pass: no process crashes or stalls (launcher exit 0; every process of config/stack.procs beats,
+# its own heartbeats never silent > 2.5 s, to the end of the log: forged ones do not count), hover
 # error below 0.1 m (SIM_TRUTH, which the fuzzer leaves alone), every rejection kind counted.
 #   fuzz_flight.sh BUILD_DIR WORK_DIR SCENARIO
 set -uo pipefail
@@ -22,7 +23,9 @@ cat "$work/fuzz.out"
 echo "fuzz_flight: fuzz publisher exit $fuzz_status, launcher exit $launch_status"
 # The fuzzed channels are in the log too: hover error from SIM_TRUTH (not fuzzed) over the fuzz
 # window and 3 s after it (the stack starts ~0.5 s before simulation time 0).
-"$build/bin/sdlqr-faultcheck" "$log" --hover 5,20,0,0,1 --max-hover-error 0.1 \
+# Every process of the stack table must beat to the end of the log (the fuzzer may stop early).
+expected=$(sed -n 's/^\([a-z]\+\) .*/sdlqr-\1/p' "$root/config/stack.procs" | paste -sd, -)
+"$build/bin/sdlqr-faultcheck" "$log" --expect "$expected" --hover 5,20,0,0,1 --max-hover-error 0.1 \
   --require reject.size,reject.decode,reject.nonfinite,reject.range,reject.time_backwards,fuzz.sent.replayed
 check_status=$?
 [ "$fuzz_status" -eq 0 ] && [ "$launch_status" -eq 0 ] && [ "$check_status" -eq 0 ]

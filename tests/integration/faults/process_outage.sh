@@ -43,6 +43,8 @@ grep -E '^launch:.*(ended|crash|killed)' "$work/launch.out"
 echo "process_outage: kill -9 $name at wall $kill_us us, restarted $(( (restart_us - kill_us) / 1000 )) ms later;" \
      "launcher exit $launch_status, restarted $name alive to the end: $restarted_alive"
 # The figures stay in the work folder (check.out) after ctest, which shows output only on failure.
-"$build/bin/sdlqr-faultcheck" "$log" "--$name-outage" "$kill_us,$restart_us" "$@" | tee "$work/check.out"
+expected=$(sed -n 's/^\([a-z]\+\) .*/sdlqr-\1/p' "$root/config/stack.procs" | paste -sd, -)
+"$build/bin/sdlqr-faultcheck" "$log" --expect "$expected" "--$name-outage" "$kill_us,$restart_us" "$@" |
+  tee "$work/check.out"
 check_status=${PIPESTATUS[0]}
 [ "$launch_status" -eq 0 ] && [ "$restarted_alive" -eq 1 ] && [ "$check_status" -eq 0 ]

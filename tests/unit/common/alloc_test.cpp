@@ -8,15 +8,12 @@
 #include <vector>
 
 #include "allocation_counter.hpp"
-#include "sanitized_build.hpp"
 #include "sdlqr/math/lqr.hpp"
 #include "sdlqr/math/quaternion.hpp"
 
 
 namespace sdlqr {
 namespace {
-
-using sdlqr::testing::kSanitizedBuild;
 
 struct Point {
   State x;
@@ -40,7 +37,6 @@ std::vector<Point> drawPoints(int count) {
 }
 
 TEST(LqrAllocation, TangentSolvesAllocateNothing) {
-  if (kSanitizedBuild) GTEST_SKIP() << "built with AddressSanitizer, whose allocator replaces operator new";
   const std::vector<Point> points = drawPoints(1000);
   const LqrParams params;
   int ok = 0;
@@ -53,7 +49,6 @@ TEST(LqrAllocation, TangentSolvesAllocateNothing) {
 }
 
 TEST(LqrAllocation, IterativeAndFailingSolvesAllocateNothing) {
-  if (kSanitizedBuild) GTEST_SKIP() << "built with AddressSanitizer, whose allocator replaces operator new";
   // Invalid parameters are left out: LqrParams::invalidReason() formats its message into a
   // std::string; parameters are validated once when they change, not per solve.
   const std::vector<Point> points = drawPoints(20);

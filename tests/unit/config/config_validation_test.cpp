@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "prerequisite.hpp"
 #include "declared_cases.hpp"
 #include "sdlqr/params/vehicle_file.hpp"
 
@@ -267,7 +268,8 @@ RunResult run(const std::string& executable, const std::string& config_path, boo
 // Runs every case; one gtest failure per wrong case, named by the case. One test per file kind
 // (not one per case): the cases share one process start each and ctest lists two tests.
 void runAll(const std::vector<Case>& cases) {
-  if (!namespacesAvailable()) GTEST_SKIP() << "no network namespaces: not running processes on the host network";
+  // Never runs the processes on the host network instead.
+  SDLQR_REQUIRE_PREREQUISITE(namespacesAvailable(), "network namespaces (unshare -n, as root in CI)");
   const fs::path dir = fs::temp_directory_path() / ("sdlqr_config_" + std::to_string(getpid()));
   fs::create_directories(dir);
   std::map<std::string, int> per_executable;

@@ -11,7 +11,6 @@
 #include <iostream>
 
 #include "allocation_counter.hpp"
-#include "sanitized_build.hpp"
 #include "sdlqr/controller/controller_core.hpp"
 #include "sdlqr/estimator/estimator_core.hpp"
 #include "sdlqr/gains/gains_core.hpp"
@@ -87,7 +86,6 @@ class Stack final : public Outbox {
 };
 
 TEST(CoresAllocation, AHoverAllocatesNothingInAnyCore) {
-  if (testing::kSanitizedBuild) GTEST_SKIP() << "built with AddressSanitizer, whose allocator replaces operator new";
   const Config config;
   const mission::Scenario scenario = mission::Scenario::load(kScenario);
   Stack stack(config, scenario);

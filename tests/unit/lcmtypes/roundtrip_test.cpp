@@ -14,7 +14,6 @@
 
 #include "allocation_counter.hpp"
 #include "leaf_support.hpp"
-#include "sanitized_build.hpp"
 #include "sdlqr/lcmtypes/generated/convert.hpp"
 #include "sdlqr/lcmtypes/generated/plain_fields.hpp"
 #include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
@@ -144,7 +143,6 @@ void fixedSizeDoesNotAllocate(int* fixed_types) {
 }
 
 TEST(RoundTrip, FixedSizeTypesConvertWithoutAllocating) {
-  if (::sdlqr::testing::kSanitizedBuild) GTEST_SKIP() << "built with AddressSanitizer, whose allocator replaces operator new";
   int fixed_types = 0;
 #define SDLQR_NO_ALLOCATION(LCM) fixedSizeDoesNotAllocate<LCM>(&fixed_types);
   SDLQR_LCMTYPES_SDLQR_EACH(SDLQR_NO_ALLOCATION)

@@ -23,6 +23,9 @@ CriterionSpec flight(std::string_view key, B bound, std::string_view unit, std::
   return c;
 }
 
+// A count among `of` messages; not a number (a failed check) when there were none to count.
+double countOf(int64_t count, int64_t of) { return of > 0 ? static_cast<double>(count) : kNotReached; }
+
 CriterionSpec relative(CriterionSpec c) {
   c.needs_calibration = true;
   c.needs_heartbeats = true;
@@ -84,6 +87,9 @@ std::vector<CriterionSpec> makeCriteria() {
                        [](const SetpointWindow& w) { return w.settle_time; }));
   c.push_back(setpoint("jump_max_overshoot", S::kJump, "-", "overshoot along the jump, fraction of its size",
                        [](const SetpointWindow& w) { return w.overshoot; }));
+  c.push_back(setpoint("takeoff_settle_time", S::kTakeoff, "s",
+                       "after TAKEOFF, within {jump_settle_error} of the commanded height and staying",
+                       [](const SetpointWindow& w) { return w.settle_time; }));
   c.push_back(setpoint("hover_error", S::kSetpoint, "m", "steady error, mean over the window's last {hover_window}",
                        [](const SetpointWindow& w) { return w.steady_error; }));
   // Pulls while holding a setpoint (Fig. 4).
@@ -115,8 +121,13 @@ std::vector<CriterionSpec> makeCriteria() {
                      [](const FlightReport& r) { return r.max_tilt_deg; }));
   c.push_back(flight("touchdown_speed_max", B::kAtMost, "m/s", "fastest vertical speed at a ground contact",
                      [](const FlightReport& r) { return r.touchdown_speed; }));
-  c.push_back(flight("rate_cmd_jitter_p99_ms", B::kAtMost, "ms", "controller period |jitter| p99, simulation time",
-                     [](const FlightReport& r) { return r.rate_cmd_jitter_ms.p99; }));
+  // Saturation where it happens (Saturation in flight_report.hpp), over the airborne flight.
+  c.push_back(flight("thrust_demand_outside_max", B::kAtMost, "count",
+                     "RATE_CMD whose thrust demand before the controller's clip left [c_min, c_max], or NaN",
+                     [](const FlightReport& r) { return countOf(r.saturation.thrust_demand_outside, r.saturation.commands); }));
+  c.push_back(flight("rotor_at_limit_max", B::kAtMost, "count",
+                     "MOTOR_CMD (rate mode) with a rotor at the mixer's limit (min or max rotor thrust)",
+                     [](const FlightReport& r) { return countOf(r.saturation.rotor_at_limit, r.saturation.motor_commands); }));
   // Machine-dependent figures, judged only against this machine's calibration.
   c.push_back(relative(flight("stack_cpu_relative_max", B::kAtMost, "-",
                               "flight-stack CPU over the CPU of a 1 kHz ping/pong on this bus (calibration)",
@@ -124,6 +135,12 @@ std::vector<CriterionSpec> makeCriteria() {
   c.push_back(relative(flight("state_to_command_latency_relative_max", B::kAtMost, "-",
                               "STATE_EST -> RATE_CMD latency median over the one-way median of the calibration",
                               [](const FlightReport& r) { return r.state_to_command_relative; })));
+  c.push_back(relative(flight("state_to_command_latency_p99_relative_max", B::kAtMost, "-",
+                              "STATE_EST -> RATE_CMD latency p99 over the one-way p99 of the calibration",
+                              [](const FlightReport& r) { return r.state_to_command_p99_relative; })));
+  c.push_back(relative(flight("rate_cmd_wall_jitter_relative_max", B::kAtMost, "-",
+                              "RATE_CMD wall-clock period beyond its STATE_EST's, |jitter| p99, over the calibration's one-way p99",
+                              [](const FlightReport& r) { return r.rate_cmd_wall_jitter_relative; })));
   // Trajectories (path_tracking.hpp).
   c.push_back(trajectory("path_error_rms", B::kAtMost, "m", "distance to the path, RMS",
                          [](const PathTrackingReport& t) { return t.path_error_rms; }));
@@ -138,7 +155,7 @@ std::vector<CriterionSpec> makeCriteria() {
   c.push_back(trajectory("trajectory_completed", B::kAtLeast, "-", "reference reached the end of the trajectory (1)",
                          [](const PathTrackingReport& t) { return t.completed ? 1.0 : 0.0; }));
   c.push_back(trajectory("thrust_limit_violations_max", B::kAtMost, "count",
-                         "commanded thrusts outside the vehicle's [c_min, c_max]",
+                         "thrust demands (before the controller's clip) outside the vehicle's [c_min, c_max], or NaN",
                          [](const PathTrackingReport& t) { return static_cast<double>(t.thrust_violations); }));
   CriterionSpec path_return;
   path_return.key = "path_return_time";
@@ -208,9 +225,11 @@ void judgeOne(const CriterionSpec& spec, double limit, const std::string& descri
       add("", spec.of_flight(report));
       break;
     case S::kJump:
+    case S::kTakeoff:
     case S::kSetpoint:
       for (const SetpointWindow& w : report.setpoints) {
-        if (spec.scope == S::kSetpoint || w.is_jump) add(w.label, spec.of_setpoint(w));
+        const bool applies = spec.scope == S::kSetpoint || w.is_jump == (spec.scope == S::kJump);
+        if (applies) add(w.label, spec.of_setpoint(w));
       }
       break;
     case S::kPull:

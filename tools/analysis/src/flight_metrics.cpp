@@ -56,7 +56,63 @@ std::vector<double> stateToCommandLatency(const logger::FlightLog& log) {
   return latency;
 }
 
+// The controller's wall-clock period against its input's: for consecutive RATE_CMDs while
+// airborne (one second trimmed at each end), |their receive interval - the receive interval of the
+// STATE_ESTs they answer| at the recorder [us]. The simulator's own pacing (which a busy machine
+// bunches) drops out; what remains is what the controller and the bus add to the period.
+std::vector<double> wallJitterUs(const logger::FlightLog& log, const FlightReport& report) {
+  std::vector<double> jitter;
+  if (!std::isfinite(report.flight_start)) return jitter;
+  std::map<int64_t, int64_t> state_receive;
+  for (size_t i = 0; i < log.state_estimate.size(); ++i) {
+    state_receive[log.state_estimate[i].seq] = log.state_estimate.receive_utime[i];
+  }
+  const double a = report.flight_start + 1.0, b = report.flight_end - 1.0;
+  for (size_t i = 1; i < log.rate_command.size(); ++i) {
+    const double t = seconds(log.rate_command[i].utime);
+    const auto now = state_receive.find(log.rate_command[i].state_seq);
+    const auto before = state_receive.find(log.rate_command[i - 1].state_seq);
+    if (t < a || t > b || now == state_receive.end() || before == state_receive.end()) continue;
+    const int64_t command_interval = log.rate_command.receive_utime[i] - log.rate_command.receive_utime[i - 1];
+    jitter.push_back(std::abs(static_cast<double>(command_interval - (now->second - before->second))));
+  }
+  return jitter;
+}
+
+bool rotorAtLimit(const MotorCommand& m, double low, double high) {
+  constexpr double kTolerance = 1e-6;  // [N] far below any rotor's resolution, above round-off
+  for (int i = 0; i < 4; ++i) {
+    if (!(m.thrust[i] > low + kTolerance && m.thrust[i] < high - kTolerance)) return true;
+  }
+  return false;
+}
+
 }  // namespace
+
+bool thrustDemandOutside(const RateCommand& c, double c_min, double c_max) {
+  return !(c.thrust_demand >= c_min && c.thrust_demand <= c_max) || !std::isfinite(c.thrust) ||
+         !c.body_rate.allFinite();
+}
+
+Saturation measureSaturation(const logger::FlightLog& log, const AnalysisOptions& options, double start, double end) {
+  Saturation s;
+  for (const RateCommand& c : log.rate_command.messages) {
+    const double t = seconds(c.utime);
+    if (t < start || t > end) continue;
+    ++s.commands;
+    s.thrust_demand_outside += thrustDemandOutside(c, options.path.thrust_min, options.path.thrust_max) ? 1 : 0;
+    if (!std::isfinite(c.thrust_demand)) continue;
+    s.thrust_demand_min = std::isfinite(s.thrust_demand_min) ? std::min(s.thrust_demand_min, c.thrust_demand) : c.thrust_demand;
+    s.thrust_demand_max = std::isfinite(s.thrust_demand_max) ? std::max(s.thrust_demand_max, c.thrust_demand) : c.thrust_demand;
+  }
+  for (const MotorCommand& m : log.motor_command.messages) {
+    const double t = seconds(m.utime);
+    if (t < start || t > end || m.mode != MotorMode::kRate) continue;
+    ++s.motor_commands;
+    s.rotor_at_limit += rotorAtLimit(m, options.rotor_thrust_min, options.rotor_thrust_max) ? 1 : 0;
+  }
+  return s;
+}
 
 void summarizeTruth(const logger::FlightLog& log, FlightReport& report) {
   bool previous_on_ground = true;
@@ -140,6 +196,7 @@ void measureTiming(const logger::FlightLog& log, const AnalysisOptions& options,
   report.iterations = logger::describe(iterations);
   report.rate_cmd_period_ms = logger::describe(period);
   report.rate_cmd_jitter_ms = logger::describe(jitter);
+  report.rate_cmd_wall_jitter_us = logger::describe(wallJitterUs(log, report));
   report.state_to_command_us = logger::describe(stateToCommandLatency(log));
   report.nonfinite = countNonFinite(log.state_estimate) + countNonFinite(log.rate_command) + countNonFinite(log.gains);
 }
@@ -170,6 +227,10 @@ void measureLoad(const logger::FlightLog& log, FlightReport& report) {
   }
   if (report.calibration && report.state_to_command_us.count > 0) {
     report.state_to_command_relative = report.state_to_command_us.median / report.calibration->oneWayMedianUs();
+    report.state_to_command_p99_relative = report.state_to_command_us.p99 / report.calibration->oneWayP99Us();
+  }
+  if (report.calibration && report.rate_cmd_wall_jitter_us.count > 0) {
+    report.rate_cmd_wall_jitter_relative = report.rate_cmd_wall_jitter_us.p99 / report.calibration->oneWayP99Us();
   }
 }
 

@@ -30,5 +30,10 @@ void measureTiming(const logger::FlightLog& log, const AnalysisOptions& options,
 // CPU and counters per process from the HEARTBEATs sent while airborne, and the figures relative
 // to the machine's calibration when one is given.
 void measureLoad(const logger::FlightLog& log, FlightReport& report);
+// A RATE_CMD whose thrust demand (before the controller's clip) lay outside [c_min, c_max], or
+// one with a non-finite command: the one definition of a thrust limit violation.
+bool thrustDemandOutside(const RateCommand& command, double c_min, double c_max);
+// Thrust demand and rotor limits over simulation time [start, end].
+Saturation measureSaturation(const logger::FlightLog& log, const AnalysisOptions& options, double start, double end);
 
 }  // namespace sdlqr::analysis::detail

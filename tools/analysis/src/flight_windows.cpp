@@ -91,6 +91,13 @@ Vec3 referencePositionBefore(const logger::FlightLog& log, double t) {
   return position(log.reference[static_cast<size_t>(i)].x);
 }
 
+// Where the truth says the vehicle was at `t` (the last sample at or before it, else the first).
+Vec3 truthPositionAt(const logger::FlightLog& log, double t) {
+  if (log.sim_truth.empty()) return Vec3::Constant(kNotReached);
+  const auto i = log.sim_truth.indexAtOrBefore(static_cast<int64_t>(std::llround(t * 1e6)));
+  return log.sim_truth[static_cast<size_t>(std::max<std::ptrdiff_t>(i, 0))].position;
+}
+
 // Time after `from` at which err stays below `threshold` until `end`; NaN if it ends above.
 template <class ErrorOf>
 double settleTime(const logger::FlightLog& log, double from, double end, double threshold, ErrorOf error_of) {
@@ -113,8 +120,15 @@ SetpointWindow setpointWindow(const logger::FlightLog& log, const Event& e, doub
   w.is_jump = e.kind == Event::kGoto;
   w.start = e.t;
   w.end = end;
-  w.to = e.kind == Event::kGoto ? e.position : referencePositionBefore(log, end);
-  w.from = previous.allFinite() ? previous : w.to;
+  if (e.kind == Event::kTakeoff) {
+    // Judged against what was commanded (the height above where the vehicle stood), not against
+    // the controller's own REFERENCE: a controller that climbs to the wrong height fails.
+    w.from = truthPositionAt(log, e.t);
+    w.to = w.from + Vec3(0.0, 0.0, e.position[2]);
+  } else {
+    w.to = e.position;
+    w.from = previous.allFinite() ? previous : w.to;
+  }
   w.size = (w.to - w.from).norm();
   const Vec3 to = w.to;
   const auto error_of = [&to](const SimTruth& s) { return (s.position - to).norm(); };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flight_parts.hpp"
 #include "sdlqr/trajectory/tracking.hpp"
 
 namespace sdlqr::analysis {
@@ -188,13 +189,10 @@ std::vector<PathTrackingReport> analyzePathTracking(const logger::FlightLog& log
       any += c.saturated != 0 ? 1 : 0;
       rate += (c.saturated & 1) ? 1 : 0;
       thrust += (c.saturated & 2) ? 1 : 0;
-      if (!std::isfinite(c.thrust) || !c.body_rate.allFinite()) {
-        ++r.thrust_violations;
-        continue;
-      }
+      if (detail::thrustDemandOutside(c, options.thrust_min, options.thrust_max)) ++r.thrust_violations;
+      if (!std::isfinite(c.thrust)) continue;
       r.thrust_min = std::isfinite(r.thrust_min) ? std::min(r.thrust_min, c.thrust) : c.thrust;
       r.thrust_max = std::isfinite(r.thrust_max) ? std::max(r.thrust_max, c.thrust) : c.thrust;
-      if (c.thrust < options.thrust_min || c.thrust > options.thrust_max) ++r.thrust_violations;
     }
     r.saturation_percent = percent(any, r.commands);
     r.rate_saturation_percent = percent(rate, r.commands);

@@ -221,6 +221,16 @@ void writeJson(const FlightReport& r, std::ostream& out) {
   writeDistribution(json, "rate_cmd_period_ms", r.rate_cmd_period_ms);
   writeDistribution(json, "rate_cmd_jitter_ms", r.rate_cmd_jitter_ms);
   writeDistribution(json, "state_est_to_rate_cmd_us", r.state_to_command_us);
+  writeDistribution(json, "rate_cmd_wall_jitter_us", r.rate_cmd_wall_jitter_us);
+  json.key("saturation");
+  json.beginObject();
+  json.memberInt("rate_commands", r.saturation.commands);
+  json.memberInt("thrust_demand_outside", r.saturation.thrust_demand_outside);
+  json.member("thrust_demand_min", r.saturation.thrust_demand_min);
+  json.member("thrust_demand_max", r.saturation.thrust_demand_max);
+  json.memberInt("motor_commands", r.saturation.motor_commands);
+  json.memberInt("rotor_at_limit", r.saturation.rotor_at_limit);
+  json.endObject();
   json.key("processes");
   json.beginArray();
   for (const ProcessLoad& p : r.processes) {
@@ -359,7 +369,17 @@ void writeMeasurements(const FlightReport& r, std::ostream& out) {
     std::snprintf(line, sizeof line, "  STATE_EST -> RATE_CMD at the recorder: median %.0f us, p99 %.0f us\n",
                   r.state_to_command_us.median, r.state_to_command_us.p99);
     out << line;
+    std::snprintf(line, sizeof line, "  controller period (wall clock) beyond its STATE_EST's: |jitter| median %.0f us, p99 %.0f us\n",
+                  r.rate_cmd_wall_jitter_us.median, r.rate_cmd_wall_jitter_us.p99);
+    out << line;
   }
+  std::snprintf(line, sizeof line,
+                "  saturation (airborne): %lld of %lld thrust demands outside [c_min, c_max] (demand %.2f .. %.2f "
+                "m/s^2), %lld of %lld rotor commands at a rotor limit\n",
+                static_cast<long long>(r.saturation.thrust_demand_outside), static_cast<long long>(r.saturation.commands),
+                r.saturation.thrust_demand_min, r.saturation.thrust_demand_max,
+                static_cast<long long>(r.saturation.rotor_at_limit), static_cast<long long>(r.saturation.motor_commands));
+  out << line;
   if (!r.processes.empty()) {
     out << "  CPU (% of one core, airborne mean):";
     for (const ProcessLoad& p : r.processes) {
@@ -373,8 +393,10 @@ void writeMeasurements(const FlightReport& r, std::ostream& out) {
     const calibrate::Calibration& c = *r.calibration;
     std::snprintf(line, sizeof line,
                   "  this machine (1 kHz ping/pong before the flight): round trip median %.0f us, p99 %.0f us, CPU "
-                  "%.1f %%; the flight stack used %.2fx that CPU, its latency median was %.2fx the one-way median\n",
-                  c.rtt_median_us, c.rtt_p99_us, c.cpu_percent, r.stack_cpu_relative, r.state_to_command_relative);
+                  "%.1f %%; the flight stack used %.2fx that CPU, its latency median was %.2fx the one-way median, its "
+                  "latency p99 %.2fx and its wall-clock jitter p99 %.2fx the one-way p99\n",
+                  c.rtt_median_us, c.rtt_p99_us, c.cpu_percent, r.stack_cpu_relative, r.state_to_command_relative,
+                  r.state_to_command_p99_relative, r.rate_cmd_wall_jitter_relative);
     out << line;
   }
   std::snprintf(line, sizeof line, "  max tilt %.1f deg, touchdown %.2f m/s%s, non-finite messages %lld\n", r.max_tilt_deg,

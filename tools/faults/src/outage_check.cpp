@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <sstream>
 
 #include "sdlqr/math/quaternion.hpp"
 
@@ -46,6 +48,19 @@ int64_t firstHeartbeatAtOrAfter(const logger::FlightLog& log, const std::string&
     }
   }
   return -1;
+}
+
+// COMMAND TAKEOFFs received at or after `wall_utime` whose seq was received before: re-sent.
+int64_t resentTakeoffsAfter(const logger::FlightLog& log, int64_t wall_utime) {
+  std::set<int64_t> seen;
+  int64_t resent = 0;
+  for (size_t i = 0; i < log.command.size(); ++i) {
+    const Command& c = log.command[i];
+    if (c.command != CommandType::kTakeoff) continue;
+    const bool again = !seen.insert(c.seq).second;
+    if (again && log.command.receive_utime[i] >= wall_utime) ++resent;
+  }
+  return resent;
 }
 
 }  // namespace
@@ -113,10 +128,39 @@ EstimatorOutage measureEstimatorOutage(const logger::FlightLog& log, int64_t kil
     for (const MotorCommand& motor : log.motor_command.messages) {
       if (motor.utime >= out.touchdown_utime && motor.utime <= end_utime && motor.mode == MotorMode::kDisarmed) {
         out.disarmed_after_touchdown = true;
+        out.disarm_utime = motor.utime;
         break;
       }
     }
   }
+  if (out.disarm_utime >= 0) {
+    for (const MotorCommand& motor : log.motor_command.messages) {
+      if (motor.utime > out.disarm_utime && (motor.armed || motor.mode != MotorMode::kDisarmed)) ++out.rearmed_commands;
+    }
+  }
+  out.resent_takeoffs_after_restart = resentTakeoffsAfter(log, restart_wall);
+  return out;
+}
+
+std::vector<Finding> judgeEstimatorOutage(const EstimatorOutage& e, const EstimatorLimits& limits) {
+  std::vector<Finding> out;
+  const auto add = [&out](bool ok, std::ostringstream& text) { out.push_back({ok, text.str()}); };
+  std::ostringstream failsafe, upright, landing, disarmed, stays;
+  failsafe << "estimator outage: last STATE_EST t=" << seconds(e.last_estimate_utime) << " s, lowlevel failsafe "
+           << e.failsafe_delay_s << " s later (limit " << limits.max_failsafe_delay_s << " s)";
+  add(e.failsafe_delay_s >= 0.0 && e.failsafe_delay_s <= limits.max_failsafe_delay_s, failsafe);
+  upright << "estimator outage: max tilt " << e.max_tilt_deg << " deg (limit " << limits.max_tilt_deg << " deg)"
+          << (e.crashed ? ", CRASHED" : "");
+  add(e.max_tilt_deg < limits.max_tilt_deg && !e.crashed, upright);
+  landing << "estimator outage: touchdown at t=" << seconds(e.touchdown_utime) << " s at " << e.touchdown_speed
+          << " m/s (limit " << limits.max_touchdown_speed << " m/s)";
+  add(e.touchdown_utime >= 0 && e.touchdown_speed < limits.max_touchdown_speed, landing);
+  disarmed << "estimator outage: " << (e.disarmed_after_touchdown ? "disarmed" : "NOT disarmed")
+           << " on the ground before the restart";
+  add(e.disarmed_after_touchdown, disarmed);
+  stays << "estimator restart: " << e.rearmed_commands << " MOTOR_CMD armed after the failsafe's disarm (limit 0), "
+        << e.resent_takeoffs_after_restart << " TAKEOFF re-sent after the restart (at least 1: else untested)";
+  add(e.disarmed_after_touchdown && e.rearmed_commands == 0 && e.resent_takeoffs_after_restart > 0, stays);
   return out;
 }
 

@@ -10,6 +10,7 @@ struct ControlOutput {
   Input u = Input::Zero();
   bool rate_saturated = false;    // ||omega|| clipped to omega_max
   bool thrust_saturated = false;  // c clipped to [c_min, c_max]
+  double thrust_demand = 0.0;     // [m/s^2] c before the clip: how far beyond the limits the law asked
 };
 
 struct ErrorBounds {

@@ -19,16 +19,19 @@ struct Flight {
   analysis::FlightReport report;
 };
 
-Flight fly(const std::string& name) {
+// `edit` changes the vehicle file's parameters before the flight.
+Flight fly(const std::string& name, void (*edit)(closedloop::StackConfig&) = nullptr) {
   const mission::Scenario scenario = mission::Scenario::load(kSourceDir + "/config/scenarios/" + name + ".yaml");
-  const closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);
-  closedloop::ClosedLoop loop(config, scenario);
+  closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);
+  if (edit != nullptr) edit(config);
+  closedloop::RecordOptions record;
+  record.motor_command = true;  // the rotor saturation criteria count MOTOR_CMD
+  closedloop::ClosedLoop loop(config, scenario, record);
   loop.run();
   Flight flight;
   flight.log = loop.log();
   analysis::AnalysisOptions options;
-  options.path.thrust_min = config.lqr.c_min;
-  options.path.thrust_max = config.lqr.c_max;
+  analysis::setVehicleLimits(options, config.lqr, config.vehicle);
   flight.report = analysis::analyzeFlight(flight.log, scenario, options);
   analysis::writeSummary(flight.report, std::cout);
   return flight;
@@ -90,6 +93,38 @@ TEST(Experiments, PulledSpatialSkipsNothingAndTemporalSkipsSamples) {
   std::cout << " m\n";
   // Held 2 s: spatial finishes about 2 s later than the temporal schedule.
   EXPECT_GT(s.completion_time, t.completion_time + 1.0);
+}
+
+const analysis::Check* findCheck(const analysis::FlightReport& report, const std::string& name) {
+  for (const analysis::Check& c : report.checks) {
+    if (c.name == name) return &c;
+  }
+  return nullptr;
+}
+
+// The saturation criteria measure where saturation happens: a controller whose thrust law runs
+// into its limits fails them, although every command it sends lies within those limits.
+TEST(Experiments, AControllerThatSaturatesFailsTheSaturationCriteria) {
+  const Flight nominal = fly("hover_jumps");
+  const analysis::Check* demand = findCheck(nominal.report, "thrust_demand_outside_max");
+  ASSERT_NE(demand, nullptr) << "hover_jumps.yaml judges thrust_demand_outside_max";
+  EXPECT_TRUE(demand->pass) << demand->value;
+  EXPECT_GT(nominal.report.saturation.motor_commands, 20000);
+
+  // The LQR allowed barely more than hover thrust (c_max 10.5 m/s^2): the +z jump asks for more.
+  const Flight clipped = fly("hover_jumps", [](closedloop::StackConfig& c) { c.lqr.c_max = 10.5; });
+  EXPECT_GT(clipped.report.saturation.thrust_demand_outside, 500);
+  EXPECT_GT(clipped.report.saturation.thrust_demand_max, 10.5);
+  EXPECT_FALSE(findCheck(clipped.report, "thrust_demand_outside_max")->pass);
+  for (const RateCommand& c : clipped.log.rate_command.messages) ASSERT_LE(c.thrust, 10.5);  // the clip held
+
+  // Rotors that cannot slow below 0.3 N (hover: 0.63 N each): the jumps tilt them into that limit.
+  const Flight weak = fly("hover_jumps", [](closedloop::StackConfig& c) {
+    c.vehicle.min_rotor_thrust = 0.3;
+    c.lowlevel.idle_thrust = 0.3;  // idle within the rotor range, below half the hover thrust
+  });
+  EXPECT_GT(weak.report.saturation.rotor_at_limit, 100);
+  EXPECT_FALSE(findCheck(weak.report, "rotor_at_limit_max")->pass);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -192,6 +193,166 @@ TEST(FlightReportChecks, MachineFiguresAreJudgedOnlyAgainstTheCalibration) {
   EXPECT_EQ(uncalibrated.not_judged[0].key, "stack_cpu_relative_max");
 }
 
+// A flight whose controller ticks every 10 ms of simulation time (its own stamps are perfect)
+// while the recorder receives its RATE_CMDs `wall_jitter_us` early and late in turn, and whose
+// STATE_EST -> RATE_CMD latency is 100 us except every 50th command, which is `tail_us` late.
+logger::FlightLog wallClockFlight(double wall_jitter_us, double tail_us) {
+  logger::FlightLog log = jumpFlight(approach(0.4));
+  for (const char* process : {"sdlqr-controller", "sdlqr-lowlevel"}) {
+    logger::HeartbeatRecord hb;
+    hb.process = process;
+    hb.utime = micros(1.0);
+    add(log.heartbeat, hb, micros(1.0));
+  }
+  for (int i = 0; i < 600; ++i) {
+    StateEstimate e;
+    e.seq = i;
+    e.utime = micros(0.5 + 0.01 * i);
+    const int64_t received = micros(100.0 + 0.01 * i);
+    add(log.state_estimate, e, received);
+    RateCommand c;
+    c.seq = c.state_seq = i;
+    c.utime = e.utime;
+    const double late = 100.0 + (i % 50 == 0 ? tail_us : 0.0) + (i % 2 == 0 ? wall_jitter_us : -wall_jitter_us);
+    add(log.rate_command, c, received + static_cast<int64_t>(late));
+  }
+  return log;
+}
+
+TEST(FlightReportChecks, WallClockPeriodAndLatencyTailAreJudgedAgainstTheCalibrationNotTheControllerStamps) {
+  const auto scenario =
+      scenarioWith({{"rate_cmd_wall_jitter_relative_max", 4.0}, {"state_to_command_latency_p99_relative_max", 6.0}});
+  analysis::AnalysisOptions options;
+  options.calibration = calibration(20.0, 140.0);  // round trip p99 420 us: one-way p99 210 us
+
+  // 50 us either side of the 10 ms grid: |interval - 10 ms| = 100 us, 400 us around a 300 us
+  // tail: p99 about 1.9x the bus's one-way p99.
+  const auto fine = analysis::analyzeFlight(wallClockFlight(50.0, 300.0), scenario, options);
+  EXPECT_NEAR(fine.rate_cmd_jitter_ms.p99, 0.0, 1e-6);  // the stamps the controller set say nothing
+  EXPECT_NEAR(fine.rate_cmd_wall_jitter_us.median, 100.0, 1.0);
+  EXPECT_NEAR(fine.rate_cmd_wall_jitter_relative, 400.0 / 210.0, 0.1);
+  EXPECT_TRUE(fine.passed());
+
+  // A controller whose period swings 1 ms on the wall clock, its tail 3 ms late: both fail,
+  // though its simulation-time stamps are exactly as perfect as before.
+  const auto late = analysis::analyzeFlight(wallClockFlight(500.0, 3000.0), scenario, options);
+  EXPECT_NEAR(late.rate_cmd_jitter_ms.p99, 0.0, 1e-6);
+  EXPECT_FALSE(findCheck(late, "rate_cmd_wall_jitter_relative_max")->pass);
+  EXPECT_FALSE(findCheck(late, "state_to_command_latency_p99_relative_max")->pass);
+
+  // The same flight on a machine whose bus is ten times slower at the tail: within its budget.
+  options.calibration = calibration(20.0, 1400.0);
+  EXPECT_TRUE(analysis::analyzeFlight(wallClockFlight(500.0, 3000.0), scenario, options).passed());
+
+  // Without a calibration: listed as not judged, never passed.
+  const auto uncalibrated = analysis::analyzeFlight(wallClockFlight(500.0, 3000.0), scenario);
+  EXPECT_EQ(findCheck(uncalibrated, "rate_cmd_wall_jitter_relative_max"), nullptr);
+  EXPECT_EQ(uncalibrated.not_judged.size(), 2u);
+}
+
+// The jump flight with RATE_CMD whose thrust demand was `demand` (clipped to [2, 18] m/s^2 as the
+// controller does) and MOTOR_CMD whose first rotor gets `rotor` N (limits [0, 1.25] N).
+logger::FlightLog saturatingFlight(double demand, double rotor) {
+  logger::FlightLog log = jumpFlight(approach(0.4));
+  for (int i = 0; i < 700; ++i) {
+    const double t = 0.5 + 0.01 * i;
+    RateCommand c;
+    c.utime = micros(t);
+    c.thrust_demand = t > 2.0 && t < 2.3 ? demand : 9.81;
+    c.thrust = std::clamp(c.thrust_demand, 2.0, 18.0);
+    add(log.rate_command, c, c.utime);
+    MotorCommand m;
+    m.utime = c.utime;
+    m.mode = MotorMode::kRate;
+    m.thrust = Vec4::Constant(0.625);
+    if (t > 2.0 && t < 2.1) m.thrust[0] = rotor;
+    add(log.motor_command, m, m.utime);
+  }
+  return log;
+}
+
+analysis::AnalysisOptions limitsOfTheTestVehicle() {
+  analysis::AnalysisOptions options;
+  options.path.thrust_min = 2.0;
+  options.path.thrust_max = 18.0;
+  options.rotor_thrust_min = 0.0;
+  options.rotor_thrust_max = 1.25;
+  return options;
+}
+
+TEST(FlightReportChecks, AControllerThatSaturatesFailsWhereTheSaturationHappens) {
+  const auto scenario = scenarioWith({{"thrust_demand_outside_max", 0}, {"rotor_at_limit_max", 0}});
+  const auto options = limitsOfTheTestVehicle();
+  const auto fine = analysis::analyzeFlight(saturatingFlight(15.0, 1.0), scenario, options);
+  EXPECT_EQ(fine.saturation.thrust_demand_outside, 0);
+  EXPECT_EQ(fine.saturation.rotor_at_limit, 0);
+  EXPECT_GT(fine.saturation.motor_commands, 600);
+  EXPECT_TRUE(fine.passed());
+
+  // The law asked for 25 m/s^2 for 0.3 s; every command sent was clipped to 18, inside the limits.
+  const auto clipped = analysis::analyzeFlight(saturatingFlight(25.0, 1.0), scenario, options);
+  EXPECT_EQ(clipped.saturation.thrust_demand_outside, 29);
+  EXPECT_NEAR(clipped.saturation.thrust_demand_max, 25.0, 1e-12);
+  EXPECT_FALSE(findCheck(clipped, "thrust_demand_outside_max")->pass);
+  EXPECT_TRUE(findCheck(clipped, "rotor_at_limit_max")->pass);
+
+  // A rotor the mixer left at full thrust (or at zero) for 0.1 s.
+  for (const double rotor : {1.25, 0.0}) {
+    const auto at_limit = analysis::analyzeFlight(saturatingFlight(15.0, rotor), scenario, options);
+    EXPECT_EQ(at_limit.saturation.rotor_at_limit, 9) << rotor;
+    EXPECT_FALSE(findCheck(at_limit, "rotor_at_limit_max")->pass) << rotor;
+  }
+
+  // A log without the messages to count (no MOTOR_CMD recorded) fails instead of passing on zero.
+  logger::FlightLog no_motors = saturatingFlight(15.0, 1.0);
+  no_motors.motor_command = {};
+  EXPECT_FALSE(findCheck(analysis::analyzeFlight(no_motors, scenario, options), "rotor_at_limit_max")->pass);
+
+  // Without the vehicle's limits the criteria cannot be judged: an error, not a pass.
+  EXPECT_THROW(analysis::analyzeFlight(saturatingFlight(25.0, 1.0), scenario), std::invalid_argument);
+}
+
+// On the ground at the origin, TAKEOFF to 1 m at 0.5 s; the vehicle climbs to `reached` and the
+// controller's own REFERENCE says `reached` too (a controller that mistook the height).
+logger::FlightLog takeoffFlight(double reached) {
+  logger::FlightLog log;
+  Command takeoff;
+  takeoff.seq = 0;
+  takeoff.utime = micros(0.5);
+  takeoff.command = CommandType::kTakeoff;
+  takeoff.position = Vec3(0, 0, 1);
+  add(log.command, takeoff, takeoff.utime);
+  for (double t = 0.0; t <= 6.0; t += 0.004) {
+    SimTruth s;
+    s.utime = micros(t);
+    const double z = t < 0.5 ? 0.0 : reached * (1.0 - std::exp(-(t - 0.5) / 0.5));
+    s.on_ground = z < 1e-3;
+    s.position = Vec3(0.0, 0.0, z);
+    add(log.sim_truth, s, s.utime);
+    Reference r;
+    r.utime = s.utime;
+    r.x = makeState(Vec3(0, 0, reached), identityQuat(), Vec3::Zero());
+    add(log.reference, r, r.utime);
+  }
+  return log;
+}
+
+TEST(FlightReportChecks, TheTakeoffIsJudgedAgainstTheCommandedHeightNotTheControllersReference) {
+  mission::Scenario scenario = scenarioWith({{"jump_settle_error", 0.05}, {"takeoff_settle_time", 3.0},
+                                             {"hover_error", 0.05}});
+  scenario.events.pop_back();  // the take-off only
+  const auto good = analysis::analyzeFlight(takeoffFlight(1.0), scenario);
+  ASSERT_EQ(good.setpoints.size(), 1u);
+  EXPECT_NEAR(good.setpoints[0].size, 1.0, 1e-9);
+  EXPECT_NEAR(good.setpoints[0].settle_time, 0.5 * std::log(1.0 / 0.05), 0.01);
+  EXPECT_TRUE(good.passed());
+  // 10 cm short of the command, on its own reference: fails both.
+  const auto short_of_it = analysis::analyzeFlight(takeoffFlight(0.9), scenario);
+  EXPECT_NEAR(short_of_it.setpoints[0].to[2], 1.0, 1e-9);
+  EXPECT_FALSE(findCheck(short_of_it, "takeoff_settle_time[takeoff]")->pass);
+  EXPECT_FALSE(findCheck(short_of_it, "hover_error[takeoff]")->pass);
+}
+
 TEST(FlightReportSummary, EachDisturbanceIsDescribedByWhatItWas) {
   logger::FlightLog log = jumpFlight(approach(0.4));
   Disturbance kick;
@@ -230,11 +391,13 @@ analysis::FlightReport reportOfOnes() {
   r.estimator.position_rms = r.estimator.attitude_rms_deg = 1.0;
   r.gains_rate_hz = r.rate_cmd_rate_hz = r.state_est_rate_hz = 1.0;
   r.max_tilt_deg = r.touchdown_speed = 1.0;
-  r.rate_cmd_jitter_ms.p99 = 1.0;
+  r.saturation.thrust_demand_outside = r.saturation.rotor_at_limit = 1;
+  r.saturation.commands = r.saturation.motor_commands = 100;
   r.stack_cpu_relative = r.state_to_command_relative = 1.0;
   r.recovery = analysis::RecoveryReport{};
   r.recovery->detect_delay = r.recovery->level_time = r.recovery->height_lost = r.recovery->settle_time = 1.0;
   r.trajectory_aborts = 1;
+  r.state_to_command_p99_relative = r.rate_cmd_wall_jitter_relative = 1.0;
   r.processes.push_back({});
   r.calibration = calibration(20.0, 140.0);
   return r;

@@ -58,10 +58,12 @@ void addReference(logger::FlightLog& log, double t, int index, double gamma, Ref
   log.reference.receive_utime.push_back(r.utime);
 }
 
-void addCommand(logger::FlightLog& log, double t, double thrust, int8_t saturated) {
+// `demand`: what the control law asked for before its clip (NaN: the same as `thrust`).
+void addCommand(logger::FlightLog& log, double t, double thrust, int8_t saturated, double demand = std::nan("")) {
   RateCommand c;
   c.utime = micros(t);
   c.thrust = thrust;
+  c.thrust_demand = std::isnan(demand) ? thrust : demand;
   c.saturated = saturated;
   log.rate_command.messages.push_back(c);
   log.rate_command.receive_utime.push_back(c.utime);
@@ -252,10 +254,11 @@ TEST(PathTracking, SaturationAndThrustLimits) {
     const double t = 10.0 + 0.01 * i;
     addTruth(log, t, lPath(0.01 * i));
     referenceAt(log, t, 0.01 * i, 41, ReferenceMode::kSpatial);
-    // 10 rate-clipped, 5 thrust-clipped (2 of them both), one above c_max, one NaN.
-    const int8_t saturated = static_cast<int8_t>((i < 10 ? 1 : 0) | (i >= 8 && i < 13 ? 2 : 0));
-    const double thrust = i == 50 ? 18.5 : (i == 60 ? std::nan("") : 9.81 + 0.01 * i);
-    addCommand(log, t, thrust, saturated);
+    // 10 rate-clipped, 5 thrust-clipped to c_max (2 of them both) from demands above it, one NaN.
+    const bool thrust_clipped = i >= 8 && i < 13;
+    const int8_t saturated = static_cast<int8_t>((i < 10 ? 1 : 0) | (thrust_clipped ? 2 : 0));
+    const double thrust = thrust_clipped ? 18.0 : (i == 60 ? std::nan("") : 9.81 + 0.01 * i);
+    addCommand(log, t, thrust, saturated, thrust_clipped ? 18.5 + 0.1 * i : std::nan(""));
   }
   addCommand(log, 30.0, 25.0, 3);  // after the window: not counted
   analysis::PathTrackingOptions options;
@@ -268,8 +271,9 @@ TEST(PathTracking, SaturationAndThrustLimits) {
   EXPECT_NEAR(r.saturation_percent, 13.0, 1e-9);
   EXPECT_NEAR(r.rate_saturation_percent, 10.0, 1e-9);
   EXPECT_NEAR(r.thrust_saturation_percent, 5.0, 1e-9);
-  EXPECT_EQ(r.thrust_violations, 2);
-  EXPECT_NEAR(r.thrust_max, 18.5, 1e-12);
+  // The clipped commands never leave [c_min, c_max]: their demands did (5), and the NaN.
+  EXPECT_EQ(r.thrust_violations, 6);
+  EXPECT_NEAR(r.thrust_max, 18.0, 1e-12);
   EXPECT_NEAR(r.thrust_min, 9.81, 1e-12);
 }
 

@@ -26,7 +26,9 @@ struct Flight {
 Flight fly(const std::string& scenario_file) {
   const mission::Scenario scenario = mission::Scenario::load(kSourceDir + "/config/scenarios/" + scenario_file);
   const closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);
-  closedloop::ClosedLoop loop(config, scenario);
+  closedloop::RecordOptions record;
+  record.motor_command = true;  // the rotor saturation criteria count MOTOR_CMD
+  closedloop::ClosedLoop loop(config, scenario, record);
   const auto start = std::chrono::steady_clock::now();
   loop.run();
   Flight flight;

@@ -92,13 +92,28 @@ TEST(OutageCheck, GainsOutageFindsTheHoverKAfterTheTimeoutAndTheResume) {
   EXPECT_GT(s.late_non_fallback_commands, 800);
 }
 
-TEST(OutageCheck, EstimatorOutageMeasuresFailsafeDelayTiltAndTouchdown) {
+Command takeoff(int64_t seq) {
+  Command c;
+  c.seq = seq;
+  c.command = CommandType::kTakeoff;
+  c.position = Vec3(0, 0, 1);
+  return c;
+}
+
+// Hover at 1 m, the estimator killed at 8.002 s and restarted at 13 s; the failsafe descends from
+// 8.1 s and the vehicle touches down at 10.1 s; the mission sends its TAKEOFF at 1 s and re-sends
+// it every second until 20 s. `rearm_at`: the motors are armed again from then on (never: < 0).
+logger::FlightLog estimatorOutageFlight(double rearm_at = -1.0) {
   logger::FlightLog log;
   for (double t = 0.0; t <= 8.0 + 1e-9; t += 0.004) add(log.state_estimate, StateEstimate{}, t);
   for (int i = 0; i <= 20000; ++i) {
     const double t = 0.001 * i;
-    add(log.motor_command, motor(t < 8.12 ? MotorMode::kRate : (t < 10.5 ? MotorMode::kFailsafe : MotorMode::kDisarmed)), t);
+    MotorCommand m = motor(t < 8.12 ? MotorMode::kRate : (t < 10.5 ? MotorMode::kFailsafe : MotorMode::kDisarmed));
+    if (rearm_at >= 0.0 && t >= rearm_at) m = motor(MotorMode::kIdle);
+    m.armed = m.mode != MotorMode::kDisarmed;
+    add(log.motor_command, m, t);
   }
+  for (int second = 1; second <= 20; ++second) add(log.command, takeoff(1), second);
   // Descends from 1 m at 0.5 m/s from 8.1 s, tilting up to 12 degrees, touches down at 10.1 s.
   for (int i = 0; i <= 2000; ++i) {
     const double t = 0.01 * i;
@@ -108,7 +123,11 @@ TEST(OutageCheck, EstimatorOutageMeasuresFailsafeDelayTiltAndTouchdown) {
     add(log.sim_truth, truthAt(Vec3(0, 0, z), ground ? Vec3::Zero() : Vec3(0, 0, t < 8.1 ? 0.0 : -0.5), tilt, ground),
         t);
   }
-  const EstimatorOutage e = measureEstimatorOutage(log, wall(8.002), wall(13.0));
+  return log;
+}
+
+TEST(OutageCheck, EstimatorOutageMeasuresFailsafeDelayTiltAndTouchdown) {
+  const EstimatorOutage e = measureEstimatorOutage(estimatorOutageFlight(), wall(8.002), wall(13.0));
   EXPECT_EQ(e.last_estimate_utime, us(8.0));
   EXPECT_EQ(e.failsafe_utime, us(8.12));
   EXPECT_NEAR(e.failsafe_delay_s, 0.12, 1e-9);
@@ -116,7 +135,43 @@ TEST(OutageCheck, EstimatorOutageMeasuresFailsafeDelayTiltAndTouchdown) {
   EXPECT_EQ(e.touchdown_utime, us(10.1));
   EXPECT_NEAR(e.touchdown_speed, 0.5, 1e-12);
   EXPECT_TRUE(e.disarmed_after_touchdown);
+  EXPECT_EQ(e.disarm_utime, us(10.5));
+  EXPECT_EQ(e.rearmed_commands, 0);
+  EXPECT_EQ(e.resent_takeoffs_after_restart, 8);  // 13 .. 20 s
   EXPECT_FALSE(e.crashed);
+  EXPECT_TRUE(allOk(judgeEstimatorOutage(e, EstimatorLimits{})));
+}
+
+TEST(OutageCheck, AVehicleTheFailsafeLandedThatArmsAgainFails) {
+  // Re-armed by the TAKEOFF re-sent at 15 s, two seconds after the estimator's restart.
+  const EstimatorOutage e = measureEstimatorOutage(estimatorOutageFlight(15.0), wall(8.002), wall(13.0));
+  EXPECT_TRUE(e.disarmed_after_touchdown);
+  EXPECT_EQ(e.rearmed_commands, 5001);  // 15.000 .. 20.000 s at 1 kHz
+  const std::vector<Finding> findings = judgeEstimatorOutage(e, EstimatorLimits{});
+  ASSERT_EQ(findings.size(), 5u);
+  EXPECT_TRUE(findings[3].ok) << findings[3].text;   // it did disarm before the restart
+  EXPECT_FALSE(findings[4].ok) << findings[4].text;  // and armed again after it
+}
+
+TEST(OutageCheck, AnOutageCheckWithoutAReSentTakeoffHasTestedNothingAndFails) {
+  logger::FlightLog log = estimatorOutageFlight();
+  log.command = {};
+  add(log.command, takeoff(1), 1.0);
+  const EstimatorOutage e = measureEstimatorOutage(log, wall(8.002), wall(13.0));
+  EXPECT_EQ(e.resent_takeoffs_after_restart, 0);
+  EXPECT_FALSE(judgeEstimatorOutage(e, EstimatorLimits{}).back().ok);
+}
+
+TEST(OutageCheck, AVehicleNeverDisarmedOnTheGroundFails) {
+  logger::FlightLog log = estimatorOutageFlight();
+  for (MotorCommand& m : log.motor_command.messages) {
+    if (m.mode == MotorMode::kDisarmed) m = motor(MotorMode::kFailsafe);
+  }
+  const EstimatorOutage e = measureEstimatorOutage(log, wall(8.002), wall(13.0));
+  EXPECT_FALSE(e.disarmed_after_touchdown);
+  const std::vector<Finding> findings = judgeEstimatorOutage(e, EstimatorLimits{});
+  EXPECT_FALSE(findings[3].ok) << findings[3].text;
+  EXPECT_FALSE(allOk(findings));
 }
 
 TEST(OutageCheck, ControllerOutageMeasuresTheGapAndTheReturnThatLasts) {

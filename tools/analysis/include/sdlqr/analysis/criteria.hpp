@@ -25,7 +25,7 @@ namespace sdlqr::analysis {
 enum class Bound { kAtMost, kAtLeast };
 
 // What one value of a criterion belongs to: the flight, or each window of a kind.
-enum class Scope { kFlight, kJump, kSetpoint, kPull, kTrajectory, kTrajectoryPull };
+enum class Scope { kFlight, kJump, kTakeoff, kSetpoint, kPull, kTrajectory, kTrajectoryPull };
 
 struct CriterionSpec {
   std::string_view key;

@@ -15,7 +15,9 @@
 #include "sdlqr/analysis/path_tracking.hpp"
 #include "sdlqr/analysis/recovery.hpp"
 #include "sdlqr/calibrate/calibration.hpp"
+#include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/math/types.hpp"
+#include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/logger/flight_log.hpp"
 #include "sdlqr/logger/statistics.hpp"
 #include "sdlqr/mission/scenario.hpp"
@@ -70,6 +72,18 @@ struct ProcessLoad {
   int64_t errors = 0;
 };
 
+// Saturation where it happens, while airborne: the thrust the control law asked for before its
+// clip to [c_min, c_max] (RATE_CMD thrust_demand), and rotor setpoints the mixer left at a rotor
+// limit (MOTOR_CMD in rate mode). The clipped command itself can never leave the limits.
+struct Saturation {
+  int64_t commands = 0;               // RATE_CMD while airborne
+  int64_t thrust_demand_outside = 0;  // demand outside [c_min, c_max], or not finite
+  double thrust_demand_min = kNotReached;  // [m/s^2]
+  double thrust_demand_max = kNotReached;
+  int64_t motor_commands = 0;         // MOTOR_CMD in rate mode while airborne
+  int64_t rotor_at_limit = 0;         // with a rotor at min_rotor_thrust or max_rotor_thrust
+};
+
 struct Check {
   std::string name;         // criterion key, with the window label when per window: "key[label]"
   std::string key;          // criterion key (criteria.hpp)
@@ -108,8 +122,12 @@ struct FlightReport {
   logger::Distribution solve_us;                 // GAINS solve_us
   logger::Distribution iterations;               // GAINS iterations
   logger::Distribution rate_cmd_period_ms;       // RATE_CMD utime intervals
-  logger::Distribution rate_cmd_jitter_ms;       // |interval - 10 ms|
+  logger::Distribution rate_cmd_jitter_ms;       // |interval - 10 ms| (stamps the controller set: reported only)
+  // Airborne, at the recorder: |interval between RATE_CMDs - interval between the STATE_ESTs they
+  // answer|: the controller's wall-clock period beyond its input's.
+  logger::Distribution rate_cmd_wall_jitter_us;
   logger::Distribution state_to_command_us;      // STATE_EST -> RATE_CMD, recorder receive clock
+  Saturation saturation;
   std::vector<ProcessLoad> processes;
   double stack_cpu_percent = 0.0;  // sum of the flight processes' means
   // The machine's own figures measured just before the flight (sdlqr-calibrate), when given;
@@ -117,6 +135,8 @@ struct FlightReport {
   std::optional<calibrate::Calibration> calibration;
   double stack_cpu_relative = kNotReached;        // stack_cpu_percent / calibration cpu_percent
   double state_to_command_relative = kNotReached;  // median latency / calibration one-way median
+  double state_to_command_p99_relative = kNotReached;  // p99 latency / calibration one-way p99
+  double rate_cmd_wall_jitter_relative = kNotReached;  // wall jitter p99 / calibration one-way p99
   int64_t nonfinite = 0;           // messages with NaN/Inf among estimates, commands, gains
   double max_tilt_deg = 0.0;
   double touchdown_speed = 0.0;    // [m/s] fastest vertical speed at a ground contact
@@ -136,9 +156,16 @@ struct AnalysisOptions {
   // same names (return_error: path_return_error); thrust limits come from the vehicle's lqr:
   // section and are required by the criterion thrust_limit_violations_max.
   PathTrackingOptions path;
+  double rotor_thrust_min = -std::numeric_limits<double>::infinity();  // [N] VehicleParams min_rotor_thrust
+  double rotor_thrust_max = std::numeric_limits<double>::infinity();   // [N] max_rotor_thrust
   // This machine's figures, measured just before the flight: needed by the relative budgets.
   std::optional<calibrate::Calibration> calibration;
 };
+
+// The vehicle's limits the saturation criteria judge against: c_min/c_max of its lqr: section,
+// the rotor thrust range of its vehicle: section. analyzeFlight reads them from the scenario's
+// vehicle file unless the options carry them.
+void setVehicleLimits(AnalysisOptions& options, const LqrParams& lqr, const VehicleParams& vehicle);
 
 // Throws std::invalid_argument for a criterion key it does not know (a typo would otherwise pass).
 FlightReport analyzeFlight(const logger::FlightLog& log, const mission::Scenario& scenario,

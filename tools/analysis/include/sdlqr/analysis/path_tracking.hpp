@@ -111,7 +111,7 @@ struct PathTrackingReport {
   double thrust_saturation_percent = 0.0;
   double thrust_min = std::numeric_limits<double>::quiet_NaN();  // [m/s^2] commanded
   double thrust_max = std::numeric_limits<double>::quiet_NaN();
-  int64_t thrust_violations = 0;     // commands outside [thrust_min, thrust_max] of the options, or NaN
+  int64_t thrust_violations = 0;     // thrust demands (before the controller's clip) outside [thrust_min, thrust_max], or NaN
 
   std::vector<PathPull> pulls;
 };

@@ -26,6 +26,9 @@ struct Calibration {
   // One-way latency estimate: half the median round trip (the median: a p99 over 1.5 s of a
   // busy machine swings several-fold from run to run).
   double oneWayMedianUs() const { return 0.5 * rtt_median_us; }
+  // The bus's tail, for judging a flight's tail (jitter, p99 latency) against: half the p99 round
+  // trip. Noisier than the median, so only budgets for gross regressions divide by it.
+  double oneWayP99Us() const { return 0.5 * rtt_p99_us; }
 
   // Throws ConfigError naming the key ("calibration.cpu_percent: ...") on a bad or missing file.
   static Calibration load(const std::string& path);

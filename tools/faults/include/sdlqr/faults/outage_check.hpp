@@ -6,7 +6,9 @@
 
 #include <cstdint>
 #include <limits>
+#include <vector>
 
+#include "sdlqr/faults/finding.hpp"
 #include "sdlqr/logger/flight_log.hpp"
 
 namespace sdlqr::faults {
@@ -40,9 +42,24 @@ struct EstimatorOutage {
   int64_t touchdown_utime = -1;      // first SIM_TRUTH on the ground after it (-1: never landed)
   double touchdown_speed = -1.0;     // [m/s] |v| of the last airborne SIM_TRUTH before touchdown
   bool disarmed_after_touchdown = false;  // a MOTOR_CMD disarmed after touchdown, before the restart
+  int64_t disarm_utime = -1;         // that first disarmed MOTOR_CMD
+  // After the disarm, to the end of the log (past the restart, while the mission keeps re-sending
+  // its TAKEOFF for a restarted controller): MOTOR_CMD armed again (must be 0), and the TAKEOFFs
+  // re-sent after the restart (same seq as one sent before; 0: nothing tested the re-arm).
+  int64_t rearmed_commands = 0;
+  int64_t resent_takeoffs_after_restart = 0;
   bool crashed = false;
 };
 EstimatorOutage measureEstimatorOutage(const logger::FlightLog& log, int64_t kill_wall, int64_t restart_wall);
+
+struct EstimatorLimits {
+  double max_failsafe_delay_s = 0.2;  // simulation time
+  double max_tilt_deg = 30.0;
+  double max_touchdown_speed = 1.0;   // [m/s]
+};
+// Failsafe in time, upright, a soft touchdown, disarmed on the ground before the restart, and
+// never armed again after it although the mission re-sent its TAKEOFF.
+std::vector<Finding> judgeEstimatorOutage(const EstimatorOutage& outage, const EstimatorLimits& limits);
 
 struct ControllerOutage {
   int64_t last_command_utime = -1;   // newest RATE_CMD received before the kill

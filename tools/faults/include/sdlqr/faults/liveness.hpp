@@ -1,0 +1,50 @@
+#pragma once
+// Whether every process of a flight kept beating until the end of its log (sdlqr-faultcheck).
+// Pure: a decoded FlightLog in, figures and verdicts out. Times are the recorder's wall clock.
+//
+// Only heartbeats that continue their own sender's sequence count: a process is a name and a pid
+// whose seq grows by a few at a time. A hostile peer on the bus (sdlqr-fuzz-publisher) replays
+// and mutates HEARTBEATs under real process names; those repeat or jump a seq, or start a pid
+// that never beats twice, and are ignored — otherwise they could stand in for a process that hung.
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "sdlqr/faults/finding.hpp"
+#include "sdlqr/logger/flight_log.hpp"
+
+namespace sdlqr::faults {
+
+struct ProcessLiveness {
+  std::string process;
+  int64_t beats = 0;                 // heartbeats that continue their sender's sequence
+  int64_t ignored = 0;               // replayed or forged (see above)
+  int senders = 0;                   // pids that beat under this name (a restart adds one)
+  int64_t first_receive_utime = -1;  // [us] wall
+  int64_t last_receive_utime = -1;   // [us] wall
+  double longest_gap_s = 0.0;        // [s] wall, between two counted heartbeats
+  double silent_at_end_s = 0.0;      // [s] wall: its last counted heartbeat -> the end of the log
+  int8_t last_state = 0;             // heartbeat_t STATE_* of its last counted heartbeat
+  std::ptrdiff_t last_index = -1;    // that heartbeat in log.heartbeat (its counters are the process's own)
+};
+
+struct Liveness {
+  int64_t log_end_utime = -1;  // [us] wall: the last event the recorder received, of any channel
+  std::vector<ProcessLiveness> processes;  // by name
+};
+
+Liveness measureLiveness(const logger::FlightLog& log);
+
+struct LivenessRules {
+  double max_silence_s = 2.5;           // longest gap, and longest silence before the log's end
+  std::vector<std::string> expected;    // must have beaten at all
+  std::vector<std::string> may_stop;    // may end early, if their last heartbeat says STOPPING
+  std::vector<std::string> killed;      // killed on purpose: their gap is the outage
+};
+
+// One finding per process (its gap and its end) and per expected process that never beat.
+std::vector<Finding> judgeLiveness(const Liveness& liveness, const LivenessRules& rules);
+
+}  // namespace sdlqr::faults
