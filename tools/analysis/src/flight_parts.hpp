@@ -30,5 +30,7 @@ void measureTiming(const logger::FlightLog& log, const AnalysisOptions& options,
 // CPU and counters per process from the HEARTBEATs sent while airborne, and the figures relative
 // to the machine's calibration when one is given.
 void measureLoad(const logger::FlightLog& log, FlightReport& report);
+// Lost messages per subscriber and channel (FlightReport::message_loss).
+std::vector<ChannelLoss> measureMessageLoss(const logger::FlightLog& log);
 
 }  // namespace sdlqr::analysis::detail

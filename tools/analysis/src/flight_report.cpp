@@ -49,6 +49,7 @@ FlightReport analyzeFlight(const logger::FlightLog& log, const mission::Scenario
   report.estimator = detail::estimatorAccuracy(log);
   detail::measureTiming(log, options, report);
   detail::measureLoad(log, report);
+  report.message_loss = detail::measureMessageLoss(log);
   report.trajectories = trackTrajectories(log, scenario, options.path);
   judgeCriteria(report, scenario, options);
   return report;
