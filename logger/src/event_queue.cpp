@@ -21,6 +21,13 @@ bool EventQueue::push(std::string_view channel, const void* data, std::size_t si
     return false;
   }
   QueuedEvent& slot = slots_[(head_ + count_) % slots_.size()];
+  if (size <= kSlotBytes && slot.data.capacity() > kSlotBytes) {
+    // The buffer a large message got is given back, in this thread, which allocated it: freed
+    // by the writer thread, glibc's per-thread caches made the memory creep all the same.
+    std::vector<uint8_t> typical;
+    typical.reserve(kSlotBytes);
+    slot.data.swap(typical);
+  }
   slot.channel.assign(channel);
   slot.data.resize(size);
   if (size > 0) std::memcpy(slot.data.data(), data, size);
@@ -42,10 +49,6 @@ bool EventQueue::pop(QueuedEvent* out, std::chrono::milliseconds timeout) {
   bytes_ -= slot.data.size();
   out->channel.assign(slot.channel);
   out->data.assign(slot.data.begin(), slot.data.end());
-  if (slot.data.capacity() > kSlotBytes) {  // a large message's own buffer: given back
-    std::vector<uint8_t>().swap(slot.data);
-    slot.data.reserve(kSlotBytes);
-  }
   out->receive_utime = slot.receive_utime;
   head_ = (head_ + 1) % slots_.size();
   --count_;

@@ -81,6 +81,10 @@ TEST(EventQueue, LargeMessagesLeaveNoMemoryBehind) {
     ASSERT_TRUE(queue.pop(&event, milliseconds(0)));
     EXPECT_EQ(event.data, m);
   }
+  for (int i = 0; i < 64; ++i) {  // one wrap of typical messages: every large buffer given back
+    ASSERT_TRUE(queue.push("A_CHANNEL_NAME_LONGER_THAN_SSO", small.data(), small.size(), i));
+    ASSERT_TRUE(queue.pop(&event, milliseconds(0)));
+  }
   EXPECT_EQ(queue.reservedBytes(), at_start);
 }
 

@@ -2,10 +2,11 @@
 // Bounded hand-over from the LCM handler thread to the log writer thread. The handler copies
 // into a slot preallocated for a typical message (kSlotBytes) and never waits for the writer:
 // when the queue is full the event is dropped and counted, so a slow disk can never block the
-// bus. A larger message (GAINS, HEARTBEAT, TRAJECTORY) gets a buffer of its own that the slot
-// gives back once written, so the memory stays what it was at start: slots that each kept the
-// largest message they had ever held made the recorder's memory creep for half an hour (README,
-// Soak).
+// bus. A larger message (GAINS, HEARTBEAT, TRAJECTORY) gets a buffer of its own, which the slot
+// gives back when it next takes a typical message, in the producer thread that allocated it; so
+// the memory stays what it was at start. Slots that each kept the largest message they had ever
+// held made the recorder's memory creep for half an hour; buffers freed by the writer thread
+// instead still crept (glibc's per-thread caches) (README, Soak).
 
 #include <chrono>
 #include <condition_variable>
@@ -47,7 +48,8 @@ class EventQueue {
   bool closedAndEmpty() const;
 
   EventQueueStats stats() const;
-  // Bytes the slots hold in reserve (their buffers' capacities): constant after construction.
+  // Bytes the slots hold in reserve (their buffers' capacities): back to the figure at
+  // construction once every slot has taken a typical message again.
   std::size_t reservedBytes() const;
 
   static constexpr std::size_t kSlotBytes = 512;  // the log's messages but GAINS, HEARTBEAT, TRAJECTORY
