@@ -8,6 +8,10 @@ namespace sdlqr::logger {
 
 EventQueue::EventQueue(std::size_t max_events, std::size_t max_bytes) : slots_(max_events), max_bytes_(max_bytes) {
   if (max_events == 0) throw std::invalid_argument("event queue needs at least one slot");
+  for (QueuedEvent& slot : slots_) {
+    slot.channel.reserve(kSlotChannel);
+    slot.data.reserve(kSlotBytes);
+  }
 }
 
 bool EventQueue::push(std::string_view channel, const void* data, std::size_t size, int64_t receive_utime) {
@@ -17,6 +21,13 @@ bool EventQueue::push(std::string_view channel, const void* data, std::size_t si
     return false;
   }
   QueuedEvent& slot = slots_[(head_ + count_) % slots_.size()];
+  if (size <= kSlotBytes && slot.data.capacity() > kSlotBytes) {
+    // The buffer a large message got is given back, in this thread, which allocated it: freed
+    // by the writer thread, glibc's per-thread caches made the memory creep all the same.
+    std::vector<uint8_t> typical;
+    typical.reserve(kSlotBytes);
+    slot.data.swap(typical);
+  }
   slot.channel.assign(channel);
   slot.data.resize(size);
   if (size > 0) std::memcpy(slot.data.data(), data, size);
@@ -36,8 +47,8 @@ bool EventQueue::pop(QueuedEvent* out, std::chrono::milliseconds timeout) {
   if (count_ == 0) return false;
   QueuedEvent& slot = slots_[head_];
   bytes_ -= slot.data.size();
-  std::swap(slot.channel, out->channel);
-  std::swap(slot.data, out->data);
+  out->channel.assign(slot.channel);
+  out->data.assign(slot.data.begin(), slot.data.end());
   out->receive_utime = slot.receive_utime;
   head_ = (head_ + 1) % slots_.size();
   --count_;
@@ -54,6 +65,13 @@ void EventQueue::close() {
 bool EventQueue::closedAndEmpty() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return closed_ && count_ == 0;
+}
+
+std::size_t EventQueue::reservedBytes() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  std::size_t bytes = 0;
+  for (const QueuedEvent& slot : slots_) bytes += slot.data.capacity() + slot.channel.capacity();
+  return bytes;
 }
 
 EventQueueStats EventQueue::stats() const {

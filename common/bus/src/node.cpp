@@ -12,12 +12,14 @@
 #include <cctype>
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <stdexcept>
 
 #include "sdlqr/heartbeat_t.hpp"
+#include "sdlqr/bus/realtime.hpp"
 #include "sdlqr/bus/wall_clock.hpp"
 #include "udpm_inbox.hpp"
 
@@ -108,6 +110,9 @@ Node::Node(std::string process, const ProcessOptions& options, ProcessHealth& he
     bus_malformed_ = health_->counters().add("bus.malformed");
     bus_over_capacity_ = health_->counters().add("bus.over_capacity");  // queue full: dropped on arrival
     bus_unrouted_ = health_->counters().add("bus.unrouted");      // no subscription of this process wants it
+  }
+  if (const std::string refused = lockMemoryWhenAsked(); !refused.empty()) {
+    std::fprintf(stderr, "%s: %s\n", process_.c_str(), refused.c_str());
   }
   if (const char* spec = std::getenv("SDLQR_FAULTS"); spec != nullptr && spec[0] != '\0') {
     setFaultInjection(FaultInjection::parse(spec));
@@ -228,6 +233,7 @@ bool Node::drainInbox(Endpoint& e) {
       const Route& route = e.routes[static_cast<size_t>(r)];
       if (route.capacity > 0 && e.delivered[static_cast<size_t>(r)] >= route.capacity) {
         health_->counters().increment(bus_over_capacity_);
+        if (route.typed != nullptr) health_->counters().increment(route.typed->queue_drop);
         continue;
       }
       ++e.delivered[static_cast<size_t>(r)];
@@ -381,8 +387,11 @@ void Node::subscribeRaw(const std::string& pattern, RawHandler handler, int queu
   raw_subscriptions_.push_back(std::move(sub));
 }
 
-void Node::addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity) {
+void Node::addSubscription(std::string_view base, std::unique_ptr<SubscriptionBase> sub, int queue_capacity) {
   sub->node = this;
+  sub->lost = health_->counters().add("lost." + std::string(base));
+  sub->queue_drop = health_->counters().add("queue_drop." + std::string(base));
+  const std::string channel = this->channel(base);
   Endpoint& e = endpointFor(channel);
   if (isUdpmUrl(e.url)) {
     markReceiving(e);
@@ -409,7 +418,10 @@ void Node::addSubscription(const std::string& channel, std::unique_ptr<Subscript
 
 void Node::noteSequence(SubscriptionBase& sub, int64_t seq) {
   // A forward jump is a loss; a backward jump is a publisher restart and starts a new count.
-  if (sub.last_seq >= 0 && seq > sub.last_seq + 1) health_->countDropped(seq - sub.last_seq - 1);
+  if (sub.last_seq >= 0 && seq > sub.last_seq + 1) {
+    health_->countDropped(seq - sub.last_seq - 1);
+    health_->counters().increment(sub.lost, seq - sub.last_seq - 1);
+  }
   sub.last_seq = seq;
 }
 

@@ -80,6 +80,19 @@ int main() {
             " message(s)" + (imu_seqs.empty() ? "" : ", last seq " + std::to_string(imu_seqs.back())));
   check(node.dropped() == 0, "no sequence gap before the first IMU is counted (dropped " +
                                  std::to_string(node.dropped()) + ")");
+  auto counter = [&](const char* name) { return node.counters().value(node.counters().find(name)); };
+  check(counter("queue_drop.IMU") == 9, "the 9 IMU over capacity count as queue_drop.IMU, got " +
+                                            std::to_string(counter("queue_drop.IMU")));
+  {
+    ImuSample s;
+    s.utime = 11000;
+    s.seq = 10;
+    const imu_t m = bus::toLcm(s);
+    imu_port.publish("IMU", &m);
+  }
+  spinFor(node, 0.3);
+  check(counter("lost.IMU") == 9 && node.dropped() == 9,
+        "seq 10 after seq 0: the 9 never handled count as lost.IMU, got " + std::to_string(counter("lost.IMU")));
   // Why the split layout uses ports, not groups: a socket bound to INADDR_ANY:port gets the
   // datagrams of every group joined on that port on the host (Linux IP_MULTICAST_ALL, default
   // on). Reported as found; what the layout relies on, that another port stays silent, is checked.

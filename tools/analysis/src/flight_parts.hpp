@@ -35,5 +35,7 @@ void measureLoad(const logger::FlightLog& log, FlightReport& report);
 bool thrustDemandOutside(const RateCommand& command, double c_min, double c_max);
 // Thrust demand and rotor limits over simulation time [start, end].
 Saturation measureSaturation(const logger::FlightLog& log, const AnalysisOptions& options, double start, double end);
+// Lost messages per subscriber and channel (FlightReport::message_loss).
+std::vector<ChannelLoss> measureMessageLoss(const logger::FlightLog& log);
 
 }  // namespace sdlqr::analysis::detail

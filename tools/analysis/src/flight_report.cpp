@@ -77,6 +77,7 @@ FlightReport analyzeFlight(const logger::FlightLog& log, const mission::Scenario
     report.saturation = detail::measureSaturation(log, options, report.flight_start, report.flight_end);
   }
   detail::measureLoad(log, report);
+  report.message_loss = detail::measureMessageLoss(log);
   report.trajectories = trackTrajectories(log, scenario, options.path);
   RecoveryOptions recovery;
   recovery.level_tilt_deg = scenario.criterion("recovery_level_tilt_deg", recovery.level_tilt_deg);

@@ -245,6 +245,17 @@ void writeJson(const FlightReport& r, std::ostream& out) {
     json.endObject();
   }
   json.endArray();
+  json.key("message_loss");
+  json.beginArray();
+  for (const ChannelLoss& l : r.message_loss) {
+    json.beginObject();
+    json.member("process", l.process);
+    json.member("channel", l.channel);
+    json.memberInt("lost", l.lost);
+    json.memberInt("queue_dropped", l.queue_dropped);
+    json.endObject();
+  }
+  json.endArray();
   json.member("stack_cpu_percent", r.stack_cpu_percent);
   writeCalibration(json, r);
   json.memberInt("nonfinite_messages", r.nonfinite);
@@ -257,6 +268,33 @@ void writeJson(const FlightReport& r, std::ostream& out) {
 }
 
 namespace {
+
+// Lost messages per subscriber and channel (only the non-zero ones) and deadline misses: the
+// figures a lossy or starved flight is read by.
+void writeLossSummary(const FlightReport& r, std::ostream& out) {
+  char item[160];
+  std::string lost;
+  for (const ChannelLoss& l : r.message_loss) {
+    if (l.lost == 0 && l.queue_dropped == 0) continue;
+    std::snprintf(item, sizeof item, " %s %s %lld", l.process.c_str(), l.channel.c_str(), static_cast<long long>(l.lost));
+    lost += item;
+    if (l.queue_dropped > 0) {
+      std::snprintf(item, sizeof item, " (queue %lld)", static_cast<long long>(l.queue_dropped));
+      lost += item;
+    }
+    lost += ",";
+  }
+  if (!lost.empty()) lost.pop_back();
+  out << "  messages lost (subscriber channel count):" << (lost.empty() ? " none" : lost) << "\n";
+  std::string misses;
+  for (const ProcessLoad& p : r.processes) {
+    if (p.deadline_misses == 0) continue;
+    std::snprintf(item, sizeof item, " %s %lld,", p.process.c_str(), static_cast<long long>(p.deadline_misses));
+    misses += item;
+  }
+  if (!misses.empty()) misses.pop_back();
+  if (!r.processes.empty()) out << "  deadline misses:" << (misses.empty() ? " none" : misses) << "\n";
+}
 
 // "force (0.00, 2.00, 0.00) N for 0.50 s", "torque (...) N m for 0.15 s", "spring hold at ...".
 std::string describeDisturbance(const Disturbance& d) {
@@ -389,6 +427,7 @@ void writeMeasurements(const FlightReport& r, std::ostream& out) {
     std::snprintf(line, sizeof line, "; flight stack %.1f\n", r.stack_cpu_percent);
     out << line;
   }
+  writeLossSummary(r, out);
   if (r.calibration) {
     const calibrate::Calibration& c = *r.calibration;
     std::snprintf(line, sizeof line,

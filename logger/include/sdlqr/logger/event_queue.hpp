@@ -1,8 +1,12 @@
 #pragma once
-// Bounded hand-over from the LCM handler thread to the log writer thread. The handler only
-// copies into a preallocated slot (no allocation once every slot has seen its largest
-// message) and never waits for the writer: when the queue is full the event is dropped and
-// counted, so a slow disk can never block the bus.
+// Bounded hand-over from the LCM handler thread to the log writer thread. The handler copies
+// into a slot preallocated for a typical message (kSlotBytes) and never waits for the writer:
+// when the queue is full the event is dropped and counted, so a slow disk can never block the
+// bus. A larger message (GAINS, HEARTBEAT, TRAJECTORY) gets a buffer of its own, which the slot
+// gives back when it next takes a typical message, in the producer thread that allocated it; so
+// the memory stays what it was at start. Slots that each kept the largest message they had ever
+// held made the recorder's memory creep for half an hour; buffers freed by the writer thread
+// instead still crept (glibc's per-thread caches) (README, Soak).
 
 #include <chrono>
 #include <condition_variable>
@@ -35,8 +39,8 @@ class EventQueue {
   // Producer side. False (and counted as dropped) when full or closed.
   bool push(std::string_view channel, const void* data, std::size_t size, int64_t receive_utime);
 
-  // Consumer side: waits up to `timeout` for an event and swaps it into *out (whose buffers go
-  // back to the slot for reuse). False on timeout, or when closed and empty.
+  // Consumer side: waits up to `timeout` for an event and copies it into *out (whose buffers
+  // grow once to the largest event). False on timeout, or when closed and empty.
   bool pop(QueuedEvent* out, std::chrono::milliseconds timeout);
 
   // Refuses further pushes and wakes the consumer; queued events can still be popped.
@@ -44,6 +48,12 @@ class EventQueue {
   bool closedAndEmpty() const;
 
   EventQueueStats stats() const;
+  // Bytes the slots hold in reserve (their buffers' capacities): back to the figure at
+  // construction once every slot has taken a typical message again.
+  std::size_t reservedBytes() const;
+
+  static constexpr std::size_t kSlotBytes = 512;  // the log's messages but GAINS, HEARTBEAT, TRAJECTORY
+  static constexpr std::size_t kSlotChannel = 64;  // LCM's longest channel name, with its NUL
 
  private:
   mutable std::mutex mutex_;

@@ -74,8 +74,9 @@ class Node {
 
   // Decodes each message of `base` as T and calls handler(msg). A message that fails the size
   // walk or the decode is rejected (kBadSize, kDecode, counted for the channel's stream in the
-  // health) and never reaches the handler. Gaps in `seq` count
-  // as dropped. queue_capacity 1: while a message waits to be handled, newer ones are dropped
+  // health) and never reaches the handler. Gaps in `seq` count as dropped, and per channel in
+  // the HEARTBEAT counters "lost.<base>" (every message this subscriber never handled: lost in
+  // the kernel, by LCM's queue or ours) and "queue_drop.<base>" (of those, dropped by our queue). queue_capacity 1: while a message waits to be handled, newer ones are dropped
   // (LCM's semantics), so a control loop never works through a backlog. A handler
   // that runs longer than a non-zero `budget` (wall time) counts as a deadline miss in HEARTBEAT.
   template <class T>
@@ -139,6 +140,8 @@ class Node {
     Node* node = nullptr;
     Stream stream = Stream::kOther;
     int64_t last_seq = -1;
+    Counters::Id lost = -1;        // "lost.<base>": forward seq gaps
+    Counters::Id queue_drop = -1;  // "queue_drop.<base>": over queue capacity on arrival
     std::chrono::steady_clock::duration budget{};  // zero: not timed
     std::chrono::steady_clock::time_point last_due{};  // keeps a channel's delayed messages in order
   };
@@ -171,7 +174,7 @@ class Node {
   void injectFault(SubscriptionBase& sub, const void* data, uint32_t size);
   void deliverDueMessages();
   int millisecondsToNextDue(int timeout_ms) const;
-  void addSubscription(const std::string& channel, std::unique_ptr<SubscriptionBase> sub, int queue_capacity);
+  void addSubscription(std::string_view base, std::unique_ptr<SubscriptionBase> sub, int queue_capacity);
   // Who gets the messages of a udpm endpoint: a typed subscription (exact channel) or a raw one.
   struct Route {
     std::string channel;  // typed: the full name
@@ -260,7 +263,7 @@ void Node::subscribe(std::string_view base, std::function<void(const T&)> handle
   sub->handler = std::move(handler);
   sub->budget = budget;
   sub->stream = streamOfChannel(base);
-  addSubscription(channel(base), std::move(sub), queue_capacity);
+  addSubscription(base, std::move(sub), queue_capacity);
 }
 
 template <class T>

@@ -84,6 +84,16 @@ struct Saturation {
   int64_t rotor_at_limit = 0;         // with a rotor at min_rotor_thrust or max_rotor_thrust
 };
 
+// Messages one subscriber never handled on one channel, from the seq gaps it saw: its last
+// HEARTBEAT's "lost.<channel>" and "queue_drop.<channel>" counters (summed over restarts), or for
+// the recorder the gaps in the log itself (process "log").
+struct ChannelLoss {
+  std::string process;
+  std::string channel;
+  int64_t lost = 0;           // every gap: the kernel, LCM's queue or ours
+  int64_t queue_dropped = 0;  // of those, dropped by the subscriber's own queue on arrival
+};
+
 struct Check {
   std::string name;         // criterion key, with the window label when per window: "key[label]"
   std::string key;          // criterion key (criteria.hpp)
@@ -129,6 +139,7 @@ struct FlightReport {
   logger::Distribution state_to_command_us;      // STATE_EST -> RATE_CMD, recorder receive clock
   Saturation saturation;
   std::vector<ProcessLoad> processes;
+  std::vector<ChannelLoss> message_loss;  // every subscriber and channel with a counter
   double stack_cpu_percent = 0.0;  // sum of the flight processes' means
   // The machine's own figures measured just before the flight (sdlqr-calibrate), when given;
   // the relative figures divide the flight's by them.
