@@ -71,7 +71,7 @@ TEST_F(SmallBatch, OneRowPerFlightWithItsDrawsAndChecks) {
   EXPECT_EQ(names.size(), t.header.size()) << "a column named twice";
   for (size_t i = 0; i < t.rows.size(); ++i) {
     EXPECT_EQ(t.rows[i][0], std::to_string(i));
-    EXPECT_EQ(t.rows[i][t.column("vehicle.motor_time_constant")], i % 2 ? "0.035" : "0.025");
+    EXPECT_EQ(std::stod(t.rows[i][t.column("vehicle.motor_time_constant")]), i % 2 ? 0.035 : 0.025);
   }
   for (const char* column : {"pass", "failed_checks", "jump_settle_time", "jump_settle_time.value", "pull_return_time",
                              "hover_error", "crashed", "crashed.value", "max_tilt_deg", "vehicle.mass", "scenario.disturbance_scale"}) {

@@ -68,9 +68,9 @@ TEST(BatchSpec, RefusesEachMistakeNamingTheKey) {
             "parameters.vehicle.mass.relatve");
   EXPECT_EQ(refusedKey("list", "parameters: {vehicle.inertia_diag: {uniform: [0.001, 0.002]}}\n"),
             "parameters.vehicle.inertia_diag");
-  EXPECT_EQ(refusedKey("index", "parameters: {vehicle.inertia_diag[3]: {uniform: [0.001, 0.002]}}\n"),
+  EXPECT_EQ(refusedKey("index", "parameters:\n  vehicle.inertia_diag[3]: {uniform: [0.001, 0.002]}\n"),
             "parameters.vehicle.inertia_diag[3]");
-  EXPECT_EQ(refusedKey("number_index", "parameters: {vehicle.mass[0]: {uniform: [0.2, 0.3]}}\n"),
+  EXPECT_EQ(refusedKey("number_index", "parameters:\n  vehicle.mass[0]: {uniform: [0.2, 0.3]}\n"),
             "parameters.vehicle.mass[0]");
   EXPECT_EQ(refusedKey("not_number", "parameters: {vehicle.mass: {uniform: [0.2, heavy]}}\n"),
             "parameters.vehicle.mass.uniform[1]");
@@ -85,7 +85,7 @@ TEST(BatchSpec, RefusesEachMistakeNamingTheKey) {
     EXPECT_EQ(e.key(), "scenario");
   }
   // An element of a list and a relative whole list are accepted.
-  EXPECT_EQ(refusedKey("element", "parameters: {vehicle.inertia_diag[2]: {uniform: [0.0015, 0.0017]}}\n"), "(accepted)");
+  EXPECT_EQ(refusedKey("element", "parameters:\n  vehicle.inertia_diag[2]: {uniform: [0.0015, 0.0017]}\n"), "(accepted)");
   EXPECT_EQ(refusedKey("whole", "parameters: {vehicle.inertia_diag: {grid: [0.9, 1.1], relative: true}}\n"), "(accepted)");
 }
 
