@@ -22,7 +22,8 @@ namespace sdlqr::batch {
 namespace {
 
 const std::string kDir = SDLQR_SOURCE_DIR "/tests/unit/tools/batch";
-const std::string kWork = SDLQR_BINARY_DIR "/batch_run_test";
+// Of this process: ctest runs each test case in a process of its own, several at once.
+const std::string kWork = SDLQR_BINARY_DIR "/batch_run_test/" + std::to_string(::getpid());
 
 std::string fileText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -36,6 +37,13 @@ std::string freshDir(const std::string& name) {
   EXPECT_EQ(std::system(("rm -rf '" + dir + "'").c_str()), 0);
   return dir;
 }
+
+// This process's folders go when it ends.
+class RemoveWorkFolder : public ::testing::Environment {
+ public:
+  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + kWork + "'").c_str()), 0); }
+};
+const auto* const kRemoveWorkFolder = ::testing::AddGlobalTestEnvironment(new RemoveWorkFolder);
 
 RunResult runIn(const BatchContext& context, const std::string& dir, int jobs, Shard shard = {}) {
   RunOptions options;
