@@ -19,8 +19,12 @@ mission::MissionOptions missionOptions(double command_resend_s) {
 
 ClosedLoop::ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record,
                        double command_resend_s)
+    : ClosedLoop(config, Plant{config.vehicle, config.sim}, scenario, record, command_resend_s) {}
+
+ClosedLoop::ClosedLoop(const StackConfig& config, const Plant& plant, const mission::Scenario& scenario,
+                       RecordOptions record, double command_resend_s)
     : record_(record),
-      sim_(config.vehicle, withSeed(config.sim, scenario.seed), scenario.sim),
+      sim_(plant.vehicle, withSeed(plant.sim, scenario.seed), scenario.sim),
       estimator_(config.estimator),
       lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity, config.faults, config.validation),
       controller_(config.lqr, config.controller, config.faults, config.validation),

@@ -46,11 +46,21 @@ struct RecordOptions {
   bool motor_command = false;
 };
 
+// What the simulator flies, when it differs from the vehicle the stack believes it flies (the
+// lowlevel's mixer and hover model keep config.vehicle): a Monte Carlo batch's perturbed plant.
+struct Plant {
+  VehicleParams vehicle;
+  sim::SimParams sim;
+};
+
 // The mission's re-sends are off by default (0): the loop has no restarted process to tell.
 class ClosedLoop : private Outbox {
  public:
   ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record = {},
              double command_resend_s = 0.0);
+  // The simulator flies `plant`; every other core reads `config` (the nominal model).
+  ClosedLoop(const StackConfig& config, const Plant& plant, const mission::Scenario& scenario,
+             RecordOptions record = {}, double command_resend_s = 0.0);
 
   // One physics step. Returns false once the scenario's duration has passed.
   bool step();

@@ -1,0 +1,61 @@
+#pragma once
+// One flight of a batch on the in-process closed loop (the process cores the executables run),
+// judged by the scenario's criteria (tools/analysis/src/criteria.cpp), as one CSV row:
+//
+//   flight, controller, seed, <each parameter>, pass, failed_checks,
+//   <each criterion judged in-process> (1 pass, 0 fail, empty: no window to judge),
+//   <criterion>.value (the worst window's value), <each metric of flightMetrics()>
+//
+// Numbers print so they read back bit for bit (logger/csv.hpp), and nothing depends on the machine
+// or the clock: the same draw gives the same row on every thread, shard and host.
+
+#include <string>
+#include <vector>
+
+#include "sdlqr/analysis/flight_report.hpp"
+#include "sdlqr/batch/draws.hpp"
+
+namespace sdlqr::batch {
+
+struct Metric {
+  const char* name;
+  const char* unit;
+  double (*of)(const analysis::FlightReport&);
+};
+// The metrics every row carries besides the criteria (crash and non-finite messages are criteria
+// of every flight), declared once.
+const std::vector<Metric>& flightMetrics();
+
+// What a batch flies: the nominal stack and scenario, loaded once and shared by every flight.
+struct BatchContext {
+  BatchSpec spec;
+  closedloop::StackConfig config;
+  mission::Scenario scenario;
+  std::vector<std::string> criteria;  // the criterion keys judged in-process, in table order
+
+  static BatchContext load(const std::string& spec_path);
+};
+
+std::vector<std::string> header(const BatchContext& context);
+
+struct FlownFlight {
+  FlightWorld world;
+  logger::FlightLog log;
+  analysis::FlightReport report;
+};
+
+// Flies one world with one controller (today every name flies the state-dependent LQR stack).
+FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std::string& controller);
+// The world of a draw (throws ConfigError "flight 17: vehicle.mass: ..." when it is no valid plant).
+FlightWorld worldOf(const BatchContext& context, const FlightDraw& draw);
+// The CSV row of a flown draw, '\n' included.
+std::string row(const BatchContext& context, const FlightDraw& draw, const std::string& controller,
+                const analysis::FlightReport& report);
+
+// Files that reproduce one flight away from the batch: scenario.yaml (its events as flown, the
+// flight's seed, the nominal vehicle file) and plant.yaml (the simulator's vehicle and sim
+// sections). `./sdlqr run scenario.yaml --plant-config plant.yaml` flies it over the bus.
+void writeFlightFiles(const BatchContext& context, const FlightDraw& draw, const std::string& dir);
+FlightWorld loadFlightFiles(const std::string& dir);
+
+}  // namespace sdlqr::batch

@@ -1,0 +1,173 @@
+#include "sdlqr/batch/plant_parameters.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace sdlqr::batch {
+
+ScenarioPerturbation::ScenarioPerturbation() { declaration().setDefaults(*this); }
+
+const ParamTable<ScenarioPerturbation>& ScenarioPerturbation::declaration() {
+  static const ParamTable<ScenarioPerturbation> table = [] {
+    using P = ScenarioPerturbation;
+    ParamTable<P> t("the scenario's disturbances, as a batch flies them");
+    t.number("disturbance_scale", &P::disturbance_scale, 1.0, "-", Range::atLeast(0.0),
+             "every disturbance's force and torque times this");
+    t.number("disturbance_delay", &P::disturbance_delay, 0.0, "s", Range::closed(-60.0, 60.0),
+             "every disturbance this much later (earlier when negative)");
+    return t;
+  }();
+  return table;
+}
+
+namespace {
+
+struct SectionOf {
+  const char* name;
+  Target target;
+  const ParamSection* declaration;
+};
+
+const std::vector<SectionOf>& sections() {
+  static const std::vector<SectionOf> list = {
+      {"vehicle", Target::kVehicle, &VehicleParams::declaration()},
+      {"sim", Target::kSim, &sim::SimParams::declaration()},
+      {"scenario", Target::kScenario, &ScenarioPerturbation::declaration()},
+  };
+  return list;
+}
+
+bool perturbable(const ParamInfo& info) {
+  return (info.kind == ParamKind::kNumber || info.kind == ParamKind::kInteger || info.kind == ParamKind::kList) &&
+         info.key != "seed";
+}
+
+// "inertia_diag[2]" -> ("inertia_diag", 2); "mass" -> ("mass", -1); -2 for a malformed index.
+std::pair<std::string, int> splitElement(const std::string& key) {
+  const size_t open = key.find('[');
+  if (open == std::string::npos) return {key, -1};
+  if (key.back() != ']' || open + 2 > key.size() - 1) return {key.substr(0, open), -2};
+  const std::string digits = key.substr(open + 1, key.size() - open - 2);
+  if (digits.empty() || !std::all_of(digits.begin(), digits.end(), ::isdigit) || digits.size() > 3) {
+    return {key.substr(0, open), -2};
+  }
+  return {key.substr(0, open), std::stoi(digits)};
+}
+
+// A section's values as the YAML a vehicle file would hold.
+template <class T>
+YAML::Node sectionNode(const T& value) {
+  std::ostringstream text;
+  YamlWriter writer(text);
+  T::declaration().print(value, writer);
+  return YAML::Load(text.str());
+}
+
+YAML::Node entry(YAML::Node node, const std::string& dotted) {
+  std::istringstream parts(dotted);
+  std::string part;
+  while (std::getline(parts, part, '.')) node.reset(node[part]);
+  return node;
+}
+
+void setValue(YAML::Node section, const PlantParameter& p, double value) {
+  YAML::Node node = entry(section, p.section_key);
+  auto text = [&](double v) {
+    return p.info.kind == ParamKind::kInteger ? std::to_string(std::llround(v)) : yamlNumber(v);
+  };
+  if (p.info.kind != ParamKind::kList) {
+    node = text(value);
+  } else if (p.element >= 0) {
+    node[p.element] = text(value);
+  } else {
+    for (int i = 0; i < p.info.size; ++i) node[i] = text(node[i].as<double>() * value);
+  }
+}
+
+template <class T>
+T loadSection(const T& nominal, const char* name, Target target, const std::vector<PlantParameter>& parameters,
+              const std::vector<double>& values) {
+  YAML::Node node;
+  bool changed = false;
+  for (size_t i = 0; i < parameters.size(); ++i) {
+    if (parameters[i].target != target) continue;
+    if (!changed) node = sectionNode(nominal);
+    changed = true;
+    setValue(node, parameters[i], values[i]);
+  }
+  return changed ? T::declaration().load(ConfigReader(node, name)) : nominal;
+}
+
+}  // namespace
+
+PlantParameter findPlantParameter(const std::string& key, const std::string& where) {
+  const size_t dot = key.find('.');
+  const std::string section = key.substr(0, dot);
+  const auto it = std::find_if(sections().begin(), sections().end(),
+                               [&](const SectionOf& s) { return section == s.name; });
+  if (dot == std::string::npos || it == sections().end()) {
+    throw ConfigError(where, "expected vehicle.<key>, sim.<key> or scenario.<key> (sdlqr-batch --list-parameters)");
+  }
+  const auto [name, element] = splitElement(key.substr(dot + 1));
+  if (element == -2) throw ConfigError(where, "expected an element index as in inertia_diag[2]");
+  for (const ParamInfo& info : it->declaration->params()) {
+    if (info.key != name) continue;
+    if (!perturbable(info)) throw ConfigError(where, "not a perturbable number (the batch seeds every flight itself)");
+    if (element >= 0 && (info.kind != ParamKind::kList || element >= info.size)) {
+      throw ConfigError(where, info.kind == ParamKind::kList
+                                   ? "index beyond the list's " + std::to_string(info.size) + " elements"
+                                   : "not a list: no index");
+    }
+    return PlantParameter{key, it->target, name, element, info};
+  }
+  throw ConfigError(where, "no such key in the " + section + " section (sdlqr-batch --list-parameters)");
+}
+
+std::vector<PlantParameter> listPlantParameters() {
+  std::vector<PlantParameter> out;
+  for (const SectionOf& s : sections()) {
+    for (const ParamInfo& info : s.declaration->params()) {
+      if (perturbable(info)) out.push_back({std::string(s.name) + "." + info.key, s.target, info.key, -1, info});
+    }
+  }
+  return out;
+}
+
+double nominalValue(const PlantParameter& parameter, const closedloop::StackConfig& config) {
+  YAML::Node section;
+  switch (parameter.target) {
+    case Target::kVehicle: section = sectionNode(config.vehicle); break;
+    case Target::kSim: section = sectionNode(config.sim); break;
+    case Target::kScenario: section = sectionNode(ScenarioPerturbation()); break;
+  }
+  const YAML::Node node = entry(section, parameter.section_key);
+  return parameter.info.kind == ParamKind::kList ? node[std::max(parameter.element, 0)].as<double>()
+                                                 : node.as<double>();
+}
+
+FlightWorld perturbedWorld(const closedloop::StackConfig& config, const mission::Scenario& scenario,
+                           const std::vector<PlantParameter>& parameters, const std::vector<double>& values) {
+  FlightWorld world{{loadSection(config.vehicle, "vehicle", Target::kVehicle, parameters, values),
+                     loadSection(config.sim, "sim", Target::kSim, parameters, values)},
+                    scenario};
+  const ScenarioPerturbation perturbation =
+      loadSection(ScenarioPerturbation(), "scenario", Target::kScenario, parameters, values);
+  world.scenario = perturbedScenario(scenario, perturbation);
+  return world;
+}
+
+mission::Scenario perturbedScenario(const mission::Scenario& scenario, const ScenarioPerturbation& perturbation) {
+  mission::Scenario out = scenario;
+  for (mission::ScenarioEvent& event : out.events) {
+    if (event.kind != mission::ScenarioEvent::Kind::kDisturbance) continue;
+    event.at = std::max(0.0, event.at + perturbation.disturbance_delay);
+    event.disturbance.force *= perturbation.disturbance_scale;
+    event.disturbance.torque *= perturbation.disturbance_scale;
+  }
+  std::stable_sort(out.events.begin(), out.events.end(),
+                   [](const mission::ScenarioEvent& a, const mission::ScenarioEvent& b) { return a.at < b.at; });
+  return out;
+}
+
+}  // namespace sdlqr::batch
