@@ -85,11 +85,15 @@ bool checkGap(const logger::FlightLog& log, int64_t down, int64_t up) {
 int main(int argc, char** argv) {
   return runMain("sdlqr-linkcheck", [&] {
     std::string bandwidth_log, latency_logs, gap_log, down_text, vehicle;
+    double min_median_us = -1.0;
     ArgParser parser("sdlqr-linkcheck", "Links between emulated hosts (scripts/deploy), measured from flight logs.");
     parser.addOption("--bandwidth", &bandwidth_log, "LOG", "messages, rate, payload and on-the-wire bandwidth per channel");
     parser.addOption("--latency", &latency_logs, "CONTROLLER_LOG,LOWLEVEL_LOG",
                      "STATE_EST -> RATE_CMD and RATE_CMD -> MOTOR_CMD across hosts, from a recorder on the\n"
                      "controller's host and one on the lowlevel's host");
+    parser.addOption("--min-median-us", &min_median_us, "US",
+                     "with --latency: fail unless the STATE_EST -> RATE_CMD median is at least US (an added delay\n"
+                     "shows; the same log twice measures at one recorder)");
     parser.addOption("--gap", &gap_log, "LOG", "check that LOG's recorder missed the vehicle's fast channels while\n"
                      "its link was down (--down), lost nothing else, and that the vehicle never entered failsafe");
     parser.addOption("--down", &down_text, "DOWN_US,UP_US", "wall instants the link went down and up (deploy --events)");
@@ -108,7 +112,14 @@ int main(int argc, char** argv) {
           deploy::crossHostLatency(logger::FlightLog::load(controller_log, vehicle), logger::FlightLog::load(lowlevel_log, vehicle));
       printDistribution("STATE_EST -> RATE_CMD", latency.state_to_command_us);
       printDistribution("RATE_CMD -> MOTOR_CMD", latency.command_to_motor_us);
-      return latency.state_to_command_us.count > 0 && latency.command_to_motor_us.count > 0 ? 0 : 1;
+      bool ok = latency.state_to_command_us.count > 0 && latency.command_to_motor_us.count > 0;
+      if (min_median_us >= 0.0) {
+        const bool slow_enough = latency.state_to_command_us.median >= min_median_us;
+        std::cout << verdict(slow_enough) << " STATE_EST -> RATE_CMD median " << latency.state_to_command_us.median
+                  << " us, at least " << min_median_us << " us\n";
+        ok = ok && slow_enough;
+      }
+      return ok ? 0 : 1;
     }
     if (down_text.empty()) throw std::invalid_argument("--gap needs --down DOWN_US,UP_US");
     const auto [down_word, up_word] = splitPair("--down", down_text);
