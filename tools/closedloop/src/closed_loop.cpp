@@ -18,9 +18,9 @@ mission::MissionOptions missionOptions(double command_resend_s) {
 }  // namespace
 
 ClosedLoop::ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record,
-                       double command_resend_s)
+                       double command_resend_s, const VehicleParams* plant)
     : record_(record),
-      sim_(config.vehicle, withSeed(config.sim, scenario.seed)),
+      sim_(plant ? *plant : config.vehicle, withSeed(config.sim, scenario.seed)),
       estimator_(config.estimator),
       lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity, config.faults, config.validation),
       controller_(config.lqr, config.controller, config.faults, config.validation),

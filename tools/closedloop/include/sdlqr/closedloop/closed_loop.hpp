@@ -47,10 +47,12 @@ struct RecordOptions {
 };
 
 // The mission's re-sends are off by default (0): the loop has no restarted process to tell.
+// `plant`: the simulator's airframe when it differs from the one the stack assumes (a plant
+// mismatch: the bodyrate loop and the controller keep config.vehicle); nullptr: config.vehicle.
 class ClosedLoop : private Outbox {
  public:
   ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record = {},
-             double command_resend_s = 0.0);
+             double command_resend_s = 0.0, const VehicleParams* plant = nullptr);
 
   // One physics step. Returns false once the scenario's duration has passed.
   bool step();
