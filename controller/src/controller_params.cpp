@@ -48,6 +48,8 @@ const ParamTable<ControllerParams>& ControllerParams::declaration() {
              "a law switch's command offset decays to zero over this time (0: the command jumps)");
     t.number("integral_limit", &P::integral_limit, 0.5, "m s", Range::above(0.0),
              "sdlqr_integral anti-windup: bound on the norm of the position-error integral");
+    t.number("integral_zone", &P::integral_zone, 0.2, "m", Range::above(0.0),
+             "sdlqr_integral anti-windup: integrates only within this distance of the reference (not during a jump)");
     t.list<3>("geometric_position_gain", &P::geometric_position_gain, kGeometricPositionGain, "1/s^2", Range::above(0.0),
            "geometric kp x, y, z: the default hover LQR as a cascade");
     t.list<3>("geometric_velocity_gain", &P::geometric_velocity_gain, kGeometricVelocityGain, "1/s", Range::above(0.0),

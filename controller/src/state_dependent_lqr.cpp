@@ -181,7 +181,9 @@ void StateDependentLqr::updateExtensionStates(const StateEstimate& estimate, con
   if (phase == FlightPhase::kHold || phase == FlightPhase::kTrajectory) {
     const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
     const State error = stateError(estimate.state(), reference.x, orientation(reference.x), bounds);
-    integral_.update(position(error), period, command.saturated != 0, params_.integral_limit);
+    if (position(error).norm() < params_.integral_zone) {
+      integral_.update(position(error), period, command.saturated != 0, params_.integral_limit);
+    }
   }
 }
 
@@ -223,6 +225,7 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
   const GainsFreshness freshness = law_tick.freshness;
   const int64_t gains_seq = law_tick.gains_seq;
   ControlOutput control = law_tick.control;
+  status_.law_output = control.u;
   const ControlLaw law = lqr_.params().law;
   if (has_commanded_ && (law != tick_law_ || law_tick.extension != tick_extension_)) {
     transfer_.start(last_command_, control.u, static_cast<int>(params_.switch_time_s * params_.rate_hz + 0.5));

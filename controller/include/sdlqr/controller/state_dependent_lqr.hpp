@@ -33,6 +33,7 @@ struct ControllerStatus {
   bool extension_active = false;        // the last tick used an extension's K_aug
   bool transferring = false;            // the last tick was part of a bumpless transfer
   int64_t law_switches = 0;             // transfers started
+  Input law_output = Input::Zero();     // the last tick's law command before the transfer (limited)
 };
 
 class StateDependentLqr {

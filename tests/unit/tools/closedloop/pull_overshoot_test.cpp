@@ -1,8 +1,11 @@
-// Why hover_jumps' pull comes back past its setpoint (issue 12, item 5): the 2 N / 0.5 s pull is
-// flown with one suspect changed at a time — the 2 m/s velocity-error bound, the 2 rad/s body-rate
-// limit, the gain rate, the pull's size and shape — and the return overshoot (fraction of the
-// largest deviation, analysis PullWindow::return_overshoot) is measured for each. The figures are
-// printed; the assertions pin down the cause the figures show.
+// Why a 2 N / 0.5 s shove (hover_jumps' pull until it became a hand's hold-and-release) came back
+// ~60 % past its setpoint where the paper's Fig. 4 shows very little overshoot: the shove is flown
+// with one suspect changed at a time — the 2 m/s velocity-error bound, the 1 m position-error
+// bound, the 2 rad/s body-rate limit, the gain rate, Q, the pull's size and shape — and the return
+// overshoot (fraction of the largest deviation, PullWindow::return_overshoot) measured for each.
+// The figures are printed; the assertions pin down the cause they show: holding 0.8 g of side
+// force tilts the vehicle ~50 degrees, and after release that tilt unwinds at no more than
+// omega_max = 2 rad/s while the thrust keeps accelerating the vehicle back through the setpoint.
 
 #include <gtest/gtest.h>
 
@@ -29,7 +32,11 @@ PullResult flyPull(Edit edit) {
   mission::Scenario scenario = mission::Scenario::load(kSourceDir + "/config/scenarios/hover_jumps.yaml");
   closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);
   for (mission::ScenarioEvent& e : scenario.events) {
-    if (e.kind == mission::ScenarioEvent::Kind::kDisturbance) edit(config, e.disturbance);
+    if (e.kind != mission::ScenarioEvent::Kind::kDisturbance) continue;
+    e.disturbance.mode = DisturbanceMode::kForce;  // the shove: 2 N along +y for 0.5 s
+    e.disturbance.force = Vec3(0.0, 2.0, 0.0);
+    e.disturbance.duration = 0.5;
+    edit(config, e.disturbance);
   }
   closedloop::ClosedLoop loop(config, scenario);
   loop.run();
@@ -46,8 +53,8 @@ PullResult report(const char* what, Edit edit) {
   return r;
 }
 
-TEST(PullOvershoot, TheImpulseNotTheControllerBoundsCausesTheReturnOvershoot) {
-  std::cout << "hover_jumps pull +y, one change at a time:\n";
+TEST(PullOvershoot, TheBodyRateLimitNotTheErrorBoundsOrGainRateMakesAShoveOvershoot) {
+  std::cout << "hover_jumps with a 2 N / 0.5 s shove along +y, one change at a time:\n";
   const PullResult as_flown = report("as flown (2 N for 0.5 s)", [](closedloop::StackConfig&, Disturbance&) {});
   const PullResult no_velocity_bound = report("velocity-error bound 2 -> 100 m/s", [](closedloop::StackConfig& c, Disturbance&) {
     c.controller.max_velocity_error = 100.0;
@@ -68,23 +75,25 @@ TEST(PullOvershoot, TheImpulseNotTheControllerBoundsCausesTheReturnOvershoot) {
     c.lqr.q_diag.segment<3>(kVel).setConstant(40.0);
   });
   // A human pull: the vehicle held on a spring at 0.6 m and let go nearly at rest.
-  const PullResult held = report("held 0.6 m away for 2 s, released at rest", [](closedloop::StackConfig&, Disturbance& d) {
+  const PullResult held = report("held 0.65 m aside (40 N/m) for 2 s, let go at rest", [](closedloop::StackConfig&, Disturbance& d) {
     d.mode = DisturbanceMode::kHold;
     d.force.setZero();
     d.duration = 2.0;
-    d.hold_position = Vec3(0.0, 0.6, 1.0);
-    d.hold_stiffness = 8.0;
-    d.hold_damping = 2.0;
+    d.hold_position = Vec3(0.0, 0.65, 1.0);
+    d.hold_stiffness = 40.0;
+    d.hold_damping = 4.0;
   });
 
-  EXPECT_GT(as_flown.overshoot, 0.3) << "the overshoot this test explains";
-  EXPECT_LT(held.overshoot, 0.1) << "a pull released at rest comes back like a reference jump";
-  (void)no_velocity_bound;
-  (void)no_position_bound;
-  (void)faster_rates;
-  (void)faster_gains;
-  (void)smaller;
-  (void)more_damping;
+  EXPECT_GT(as_flown.overshoot, 0.4) << "the overshoot this test explains";
+  // Not the error bounds (never reached: the overshoot does not move), not the gain rate.
+  EXPECT_NEAR(no_velocity_bound.overshoot, as_flown.overshoot, 0.03);
+  EXPECT_NEAR(no_position_bound.overshoot, as_flown.overshoot, 0.03);
+  EXPECT_NEAR(faster_gains.overshoot, as_flown.overshoot, 0.05);
+  // More velocity weight helps a little; the rate limit is what decides.
+  EXPECT_GT(more_damping.overshoot, 0.3);
+  EXPECT_LT(faster_rates.overshoot, 0.1) << "omega_max 6 rad/s: the tilt unwinds in time";
+  EXPECT_LT(smaller.overshoot, 0.15) << "a quarter of the force needs a quarter of the tilt";
+  EXPECT_LT(held.overshoot, 0.1) << "a pull released at rest (a hand's) comes back like a reference jump";
 }
 
 }  // namespace
