@@ -88,7 +88,8 @@ const ParamTable<LqrParams>& LqrParams::declaration() {
     t.choice("law", &P::law, ControlLaw::kSdlqr, laws,
              "controller: sdlqr (paper), hover_lqr (K solved once at hover), geometric (cascaded SE(3)), "
              "sdlqr_integral (ext. I), sdlqr_actuator (ext. II); PARAMS law switches it in flight");
-    t.list("q_integral", &P::q_integral, {4, 4, 4}, "-", Range::atLeast(0.0),
+    // > 0: an integrator the cost does not see has no stabilizing Riccati solution.
+    t.list("q_integral", &P::q_integral, {4, 4, 4}, "-", Range::above(0.0),
            "sdlqr_integral: cost on the integral of p - p_ref (m s)");
     t.number("q_thrust", &P::q_thrust, 0.01, "-", Range::atLeast(0.0),
              "sdlqr_actuator: cost on the thrust state's deviation (m/s^2)");
