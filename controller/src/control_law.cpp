@@ -26,8 +26,12 @@ State stateError(const State& x, const State& x_ref, const Quat& q_lin, const Er
 
 ControlOutput applyControlLaw(const GainMatrix& K, const Quat& q_lin, const State& x, const State& x_ref,
                               const Input& u_ref, const LqrParams& limits, const ErrorBounds& bounds) {
+  return applyInputLimits(u_ref + K * stateError(x, x_ref, q_lin, bounds), limits);
+}
+
+ControlOutput applyInputLimits(const Input& u, const LqrParams& limits) {
   ControlOutput out;
-  out.u = u_ref + K * stateError(x, x_ref, q_lin, bounds);
+  out.u = u;
   const double rate_norm = bodyRate(out.u).norm();
   if (rate_norm > limits.omega_max) {
     bodyRate(out.u) *= limits.omega_max / rate_norm;

@@ -1,6 +1,19 @@
 #include "sdlqr/controller/controller_params.hpp"
 
+#include <array>
+
 namespace sdlqr::controller {
+
+namespace {
+
+// The hover LQR of the default lqr weights written as a cascade (control_family_test.cpp,
+// Geometric.DefaultGainsAreTheHoverLqrsOwn, derives them): for small errors at hover the geometric
+// law then commands what the LQR commands, and the two differ only where the paper says they do.
+constexpr std::array<double, 3> kGeometricPositionGain = {5.61, 9.10, 29.7};
+constexpr std::array<double, 3> kGeometricVelocityGain = {3.79, 5.14, 12.1};
+constexpr std::array<double, 3> kGeometricAttitudeGain = {10.2, 7.53, 0.223};
+
+}  // namespace
 
 ControllerParams::ControllerParams() { declaration().setDefaults(*this); }
 
@@ -32,6 +45,18 @@ const ParamTable<ControllerParams>& ControllerParams::declaration() {
              {{"spatial", ReferenceMode::kSpatial}, {"temporal", ReferenceMode::kTemporal}},
              "reference scheme of trajectories that do not say (spatial or temporal)");
     t.section("guard", &P::guard);
+    t.number("switch_time_s", &P::switch_time_s, 0.5, "s", Range::closed(0.0, 5.0),
+             "a law switch's command offset decays to zero over this time (0: the command jumps)");
+    t.number("integral_limit", &P::integral_limit, 0.5, "m s", Range::above(0.0),
+             "sdlqr_integral anti-windup: bound on the norm of the position-error integral");
+    t.number("integral_zone", &P::integral_zone, 0.2, "m", Range::above(0.0),
+             "sdlqr_integral anti-windup: integrates only within this distance of the reference (not during a jump)");
+    t.list<3>("geometric_position_gain", &P::geometric_position_gain, kGeometricPositionGain, "1/s^2", Range::above(0.0),
+           "geometric kp x, y, z: the default hover LQR as a cascade");
+    t.list<3>("geometric_velocity_gain", &P::geometric_velocity_gain, kGeometricVelocityGain, "1/s", Range::above(0.0),
+           "geometric kd x, y, z: the default hover LQR as a cascade");
+    t.list<3>("geometric_attitude_gain", &P::geometric_attitude_gain, kGeometricAttitudeGain, "1/s", Range::above(0.0),
+           "geometric k_att roll, pitch, yaw: the default hover LQR's rate per attitude error");
     t.check("gains_fallback_s", [](const P& p) { return p.gains_fallback_s > p.gains_stale_s; }, "must be > gains_stale_s");
     return t;
   }();

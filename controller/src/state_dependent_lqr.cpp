@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "sdlqr/math/lqr.hpp"
+#include "sdlqr/math/lqr_extensions.hpp"
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/state_prediction.hpp"
 
@@ -47,9 +48,22 @@ StateDependentLqr::StateDependentLqr(const LqrParams& lqr, const ControllerParam
       params_(params),
       references_(params, lqr.gravity),
       fallback_K_(solveHoverGain(lqr)),
+      thrust_model_(lqr.gravity),
+      tick_law_(lqr.law),
       last_thrust_(lqr.gravity) {}
 
+StateDependentLqr::GainSlot& StateDependentLqr::slotFor(ControlLaw law) {
+  return law == ControlLaw::kSdlqrIntegral ? integral_gains_ : actuator_gains_;
+}
+
 void StateDependentLqr::setGains(const GainSet& gains) {
+  if (gains.law == ControlLaw::kSdlqrIntegral || gains.law == ControlLaw::kSdlqrActuator) {
+    GainSlot& slot = slotFor(gains.law);
+    if (slot.has && gains.utime < slot.gains.utime) return;
+    slot.gains = gains;
+    slot.has = true;
+    return;
+  }
   if (has_gains_ && gains.utime < gains_.utime) return;  // a late, older solve
   gains_ = gains;
   has_gains_ = true;
@@ -77,6 +91,8 @@ ParamsOutcome StateDependentLqr::applyParams(const ParamsUpdate& update) {
     fallback_K_ = hover.K;
   }
   if (update.field_mask & ParamsUpdate::kTracking) references_.setTrackingMode(update.tracking, latest_.utime);
+  // A law switched to the integral starts it from zero (the transfer takes the command over).
+  if (next.params().law != lqr_.params().law) integral_.reset();
   lqr_ = next;
   return outcome;
 }
@@ -91,6 +107,84 @@ const GainMatrix& StateDependentLqr::chooseGain(int64_t now_utime, GainsFreshnes
   freshness = GainsFreshness::kFallback;
   gains_seq = -1;
   return fallback_K_;
+}
+
+void StateDependentLqr::hoverGain(const Reference& reference, GainMatrix& K, Quat& q_lin) const {
+  const double yaw = quat::yaw(orientation(reference.x));
+  K = yawedHoverGain(fallback_K_, yaw);
+  q_lin = quat::fromYaw(yaw);
+}
+
+// The paper's law: the newest K, stale, or the hover K after the fallback age.
+StateDependentLqr::LawTick StateDependentLqr::lqrTick(const StateEstimate& estimate, const Reference& reference) {
+  LawTick tick;
+  const GainMatrix& chosen = chooseGain(estimate.utime, tick.freshness, tick.gains_seq);
+  GainMatrix yawed;
+  const GainMatrix* K = &chosen;
+  Quat q_lin = orientation(gains_.x_lin);
+  if (tick.freshness == GainsFreshness::kFallback) {
+    hoverGain(reference, yawed, q_lin);
+    K = &yawed;
+  }
+  const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
+  tick.control = applyControlLaw(*K, q_lin, estimate.state(), reference.x, reference.u, lqr_.params(), bounds);
+  return tick;
+}
+
+bool StateDependentLqr::extensionFresh(const GainSlot& slot, int64_t now_utime) const {
+  return slot.has && static_cast<double>(now_utime - slot.gains.utime) * 1e-6 <= params_.gains_fallback_s;
+}
+
+StateDependentLqr::LawTick StateDependentLqr::computeLaw(const StateEstimate& estimate, const Reference& reference) {
+  const ControlLaw law = lqr_.params().law;
+  const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
+  if (law == ControlLaw::kSdlqr) return lqrTick(estimate, reference);
+  // The laws that use no GAINS report the solver's freshness all the same (a switch back needs it).
+  LawTick tick;
+  int64_t solver_seq = -1;
+  chooseGain(estimate.utime, tick.freshness, solver_seq);
+  if (law == ControlLaw::kHoverLqr) {
+    GainMatrix K;
+    Quat q_lin;
+    hoverGain(reference, K, q_lin);
+    tick.control = applyControlLaw(K, q_lin, estimate.state(), reference.x, reference.u, lqr_.params(), bounds);
+    return tick;
+  }
+  if (law == ControlLaw::kGeometric) {
+    const GeometricGains gains{params_.geometric_position_gain, params_.geometric_velocity_gain,
+                               params_.geometric_attitude_gain};
+    tick.control = geometricControl(estimate.state(), reference.x, reference.u, gains, lqr_.params(), bounds);
+    return tick;
+  }
+  const GainSlot& slot = law == ControlLaw::kSdlqrIntegral ? integral_gains_ : actuator_gains_;
+  if (!extensionFresh(slot, estimate.utime)) return lqrTick(estimate, reference);
+  const double age = static_cast<double>(estimate.utime - slot.gains.utime) * 1e-6;
+  tick.freshness = age <= params_.gains_stale_s ? GainsFreshness::kFresh : GainsFreshness::kStale;
+  tick.gains_seq = slot.gains.seq;
+  tick.extension = true;
+  Input u_ref = reference.u;
+  if (law == ControlLaw::kSdlqrIntegral) {
+    u_ref += slot.gains.K_aug.middleCols<3>(kAugIntegral) * integral_.value();
+  } else {
+    u_ref += slot.gains.K_aug.col(kAugThrust) * (thrust_model_.value() - reference.u[kThrust]);
+  }
+  tick.control = applyControlLaw(slot.gains.K, orientation(slot.gains.x_lin), estimate.state(), reference.x, u_ref,
+                                 lqr_.params(), bounds);
+  return tick;
+}
+
+void StateDependentLqr::updateExtensionStates(const StateEstimate& estimate, const Reference& reference,
+                                              const RateCommand& command) {
+  const double period = 1.0 / params_.rate_hz;
+  thrust_model_.update(command.thrust, period, lqr_.params().thrust_time_constant);
+  const FlightPhase phase = references_.phase();
+  if (phase == FlightPhase::kHold || phase == FlightPhase::kTrajectory) {
+    const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
+    const State error = stateError(estimate.state(), reference.x, orientation(reference.x), bounds);
+    if (position(error).norm() < params_.integral_zone) {
+      integral_.update(position(error), period, command.saturated != 0, params_.integral_limit);
+    }
+  }
 }
 
 int64_t StateDependentLqr::tickUtimeFor(const StateEstimate& received) const {
@@ -120,26 +214,32 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
   Reference& reference = out.reference;
   if (!references_.update(estimate, reference)) {
     status_.phase = references_.phase();
+    // On the ground: the extensions' states start afresh at the next take-off.
+    integral_.reset();
+    thrust_model_.reset(lqr_.params().gravity);
     return false;
   }
   status_.phase = references_.phase();
 
-  GainsFreshness freshness = GainsFreshness::kFresh;
-  int64_t gains_seq = -1;
-  const GainMatrix& chosen = chooseGain(estimate.utime, freshness, gains_seq);
-  GainMatrix yawed;
-  const GainMatrix* K = &chosen;
-  Quat q_lin = orientation(gains_.x_lin);
-  if (freshness == GainsFreshness::kFallback) {
-    const double yaw = quat::yaw(orientation(reference.x));
-    yawed = yawedHoverGain(chosen, yaw);
-    K = &yawed;
-    q_lin = quat::fromYaw(yaw);
+  const LawTick law_tick = computeLaw(estimate, reference);
+  const GainsFreshness freshness = law_tick.freshness;
+  const int64_t gains_seq = law_tick.gains_seq;
+  ControlOutput control = law_tick.control;
+  status_.law_output = control.u;
+  const ControlLaw law = lqr_.params().law;
+  if (has_commanded_ && (law != tick_law_ || law_tick.extension != tick_extension_)) {
+    transfer_.start(last_command_, control.u, static_cast<int>(params_.switch_time_s * params_.rate_hz + 0.5));
+    ++status_.law_switches;
   }
-
-  const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
-  const ControlOutput control =
-      applyControlLaw(*K, q_lin, estimate.state(), reference.x, reference.u, lqr_.params(), bounds);
+  tick_law_ = law;
+  tick_extension_ = law_tick.extension;
+  status_.transferring = transfer_.active();
+  if (status_.transferring) {
+    const ControlOutput limited = applyInputLimits(transfer_.apply(control.u), lqr_.params());
+    control.u = limited.u;
+    control.rate_saturated = control.rate_saturated || limited.rate_saturated;
+    control.thrust_saturated = control.thrust_saturated || limited.thrust_saturated;
+  }
 
   reference.utime = estimate.utime;
   reference.seq = reference_seq_++;
@@ -159,7 +259,14 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
   command.thrust_demand = control.thrust_demand;
   command.gains_status = freshness;
 
+  command.law = law;
+
   last_thrust_ = command.thrust;
+  last_command_ = control.u;
+  has_commanded_ = true;
+  updateExtensionStates(estimate, reference, command);
+  status_.law = law;
+  status_.extension_active = law_tick.extension;
   ++status_.ticks;
   if (estimate.utime != received.utime) ++status_.predicted_ticks;
   status_.gains = freshness;

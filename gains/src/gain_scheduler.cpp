@@ -2,6 +2,16 @@
 
 namespace sdlqr::gains {
 
+namespace {
+
+// hover_lqr and geometric use no GAINS; the paper's K is solved for them all the same, so that a
+// switch back to sdlqr finds a fresh K at once.
+ControlLaw solvedLaw(ControlLaw law) {
+  return law == ControlLaw::kSdlqrIntegral || law == ControlLaw::kSdlqrActuator ? law : ControlLaw::kSdlqr;
+}
+
+}  // namespace
+
 GainScheduler::GainScheduler(const LqrParams& params, double rate_hz)
     : lqr_(params),
       period_utime_(static_cast<int64_t>(1e6 / rate_hz + 0.5)),
@@ -16,7 +26,8 @@ bool GainScheduler::due(const StateEstimate& estimate) {
 SolveStatus GainScheduler::solve(const StateEstimate& estimate, GainSet& out) {
   const State x = estimate.state();
   const LqrParams& params = lqr_.params();
-  const LqrResult result = solveLqr(x, reference_input_, params);
+  const ExtendedLqrResult extended = solveLqrForLaw(x, reference_input_, params);
+  const LqrResult& result = extended.lqr;
   ++solves_;
   out.utime = estimate.utime;
   out.x_lin = x;
@@ -32,12 +43,16 @@ SolveStatus GainScheduler::solve(const StateEstimate& estimate, GainSet& out) {
   out.reference_seq = reference_seq_;
   out.method = params.method == LqrMethod::kTangent ? GainsMethod::kTangent : GainsMethod::kIterative;
   out.status = result.status;
+  out.law = solvedLaw(params.law);
+  out.thrust_time_constant = out.law == ControlLaw::kSdlqrActuator ? params.thrust_time_constant : 0.0;
   if (result.status != SolveStatus::kOk) {
     ++failures_;
     out.K.setZero();
+    out.K_aug.setZero();
     return result.status;
   }
   out.K = result.K;
+  out.K_aug = extended.K_aug;
   out.seq = seq_++;
   return SolveStatus::kOk;
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/math/vehicle.hpp"
 
 namespace sdlqr {
@@ -78,9 +79,11 @@ RejectReason validate(const GainSet& m, const ValidationLimits& limits) {
       !std::isfinite(m.dt)) {
     return RejectReason::kNonFinite;
   }
+  if (!finite(m.K_aug) || !std::isfinite(m.thrust_time_constant)) return RejectReason::kNonFinite;
   if (m.status != SolveStatus::kOk) return RejectReason::kBadStatus;
   const auto method = static_cast<int8_t>(m.method);
-  if (method < 0 || method > 1) return RejectReason::kBadEnum;
+  if (method < 0 || method > 1 || !isControlLaw(m.law)) return RejectReason::kBadEnum;
+  if (m.K_aug.cwiseAbs().maxCoeff() > limits.max_gain || m.thrust_time_constant < 0.0) return RejectReason::kOutOfRange;
   if (!unitQuaternion(orientation(m.x_lin), limits)) return RejectReason::kQuaternionNorm;
   if (m.K.cwiseAbs().maxCoeff() > limits.max_gain || !(m.dt > 0.0 && m.dt <= 1.0) || m.utime < 0) {
     return RejectReason::kOutOfRange;
@@ -91,7 +94,7 @@ RejectReason validate(const GainSet& m, const ValidationLimits& limits) {
 RejectReason validate(const RateCommand& m, const ValidationLimits& limits) {
   if (!finite(m.body_rate) || !std::isfinite(m.thrust)) return RejectReason::kNonFinite;
   const auto status = static_cast<int8_t>(m.gains_status);
-  if (status < 0 || status > 2) return RejectReason::kBadEnum;
+  if (status < 0 || status > 2 || !isControlLaw(m.law)) return RejectReason::kBadEnum;
   if (m.body_rate.norm() > limits.max_body_rate || m.thrust < 0.0 || m.thrust > limits.max_thrust || m.utime < 0) {
     return RejectReason::kOutOfRange;
   }
@@ -122,9 +125,11 @@ RejectReason validate(const Command& m, const ValidationLimits& limits) {
 }
 
 RejectReason validate(const ParamsUpdate& m, const ValidationLimits& limits) {
-  if (m.field_mask & ~(ParamsUpdate::kWeights | ParamsUpdate::kLimits | ParamsUpdate::kMass | ParamsUpdate::kTracking)) {
+  if (m.field_mask & ~(ParamsUpdate::kWeights | ParamsUpdate::kLimits | ParamsUpdate::kMass | ParamsUpdate::kTracking |
+                       ParamsUpdate::kLaw)) {
     return RejectReason::kBadEnum;
   }
+  if ((m.field_mask & ParamsUpdate::kLaw) && !isControlLaw(m.law)) return RejectReason::kBadEnum;
   if ((m.field_mask & ParamsUpdate::kWeights) && (!finite(m.q_diag) || !finite(m.r_diag))) {
     return RejectReason::kNonFinite;
   }

@@ -4,6 +4,7 @@
 
 #include "sdlqr/math/discretize.hpp"
 #include "sdlqr/math/lqr.hpp"
+#include "sdlqr/math/lqr_extensions.hpp"
 #include "sdlqr/math/model.hpp"
 #include "sdlqr/health/validate.hpp"
 
@@ -11,6 +12,9 @@ namespace sdlqr {
 
 double closedLoopSpectralRadius(const GainSet& m) {
   constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  if (m.law == ControlLaw::kSdlqrIntegral || m.law == ControlLaw::kSdlqrActuator) {
+    return extendedClosedLoopSpectralRadius(m.law, m.x_lin, m.u_lin, m.dt, m.thrust_time_constant, m.K, m.K_aug);
+  }
   const Quat q = orientation(m.x_lin);
   if (!m.K.allFinite() || !m.x_lin.allFinite() || !m.u_lin.allFinite() || !std::isfinite(m.dt) || m.dt <= 0.0 ||
       q.norm() < 1e-9) {

@@ -343,5 +343,7 @@ template DiscreteSystem<9, 4> discretizeZoh<9, 4>(const Eigen::Matrix<double, 9,
                                                   double);
 template DiscreteSystem<10, 4> discretizeZoh<10, 4>(const Eigen::Matrix<double, 10, 10>&,
                                                     const Eigen::Matrix<double, 10, 4>&, double);
+template DiscreteSystem<12, 4> discretizeZoh<12, 4>(const Eigen::Matrix<double, 12, 12>&,
+                                                    const Eigen::Matrix<double, 12, 4>&, double);
 
 }  // namespace sdlqr

@@ -1,6 +1,8 @@
 #include "sdlqr/math/lqr_params.hpp"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "sdlqr/math/vehicle.hpp"
 
@@ -14,6 +16,47 @@ bool parseLqrMethod(const std::string& text, LqrMethod& out) {
       out = method;
       return true;
     }
+  }
+  return false;
+}
+
+namespace {
+
+constexpr ControlLaw kLaws[] = {ControlLaw::kSdlqr, ControlLaw::kHoverLqr, ControlLaw::kGeometric,
+                                ControlLaw::kSdlqrIntegral, ControlLaw::kSdlqrActuator};
+
+}  // namespace
+
+const char* toString(ControlLaw law) {
+  switch (law) {
+    case ControlLaw::kSdlqr: return "sdlqr";
+    case ControlLaw::kHoverLqr: return "hover_lqr";
+    case ControlLaw::kGeometric: return "geometric";
+    case ControlLaw::kSdlqrIntegral: return "sdlqr_integral";
+    case ControlLaw::kSdlqrActuator: return "sdlqr_actuator";
+  }
+  return "unknown";
+}
+
+bool parseControlLaw(const std::string& text, ControlLaw& out) {
+  for (ControlLaw law : kLaws) {
+    if (text == toString(law)) {
+      out = law;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string controlLawNames() {
+  std::string names;
+  for (ControlLaw law : kLaws) names += (names.empty() ? "" : ", ") + std::string(toString(law));
+  return names;
+}
+
+bool isControlLaw(ControlLaw law) {
+  for (ControlLaw known : kLaws) {
+    if (law == known) return true;
   }
   return false;
 }
@@ -40,6 +83,19 @@ const ParamTable<LqrParams>& LqrParams::declaration() {
     t.number("tolerance", &P::tolerance, 1e-12, "-", Range::open(0.0, 1.0), "relative convergence tolerance");
     t.integer("max_iterations", &P::max_iterations, 0, "-", Range::atLeast(0),
               "iteration cap; 0: the method's own (64 doublings, 100000 iterations)");
+    std::vector<std::pair<std::string, ControlLaw>> laws;
+    for (ControlLaw law : kLaws) laws.emplace_back(toString(law), law);
+    t.choice("law", &P::law, ControlLaw::kSdlqr, laws,
+             "controller: sdlqr (paper), hover_lqr (K solved once at hover), geometric (cascaded SE(3)), "
+             "sdlqr_integral (ext. I), sdlqr_actuator (ext. II); PARAMS law switches it in flight");
+    // > 0: an integrator the cost does not see has no stabilizing Riccati solution.
+    t.list("q_integral", &P::q_integral, {4, 4, 4}, "-", Range::above(0.0),
+           "sdlqr_integral: cost on the integral of p - p_ref (m s)");
+    t.number("q_thrust", &P::q_thrust, 0.01, "-", Range::atLeast(0.0),
+             "sdlqr_actuator: cost on the thrust state's deviation (m/s^2)");
+    // The plant's lag is vehicle.motor_time_constant; this is what the controller's model assumes.
+    t.number("thrust_time_constant", &P::thrust_time_constant, 0.03, "s", Range::openClosed(0.0, 1.0),
+             "sdlqr_actuator: the model's first-order collective-thrust lag (vehicle: motor_time_constant)");
     t.check("c_max", [](const P& p) { return p.c_max > p.c_min; }, "must be > c_min");
     return t;
   }();
@@ -57,7 +113,8 @@ const char* toString(ParamsOutcome outcome) {
 
 ParamsOutcome RuntimeLqrParams::apply(const ParamsUpdate& update) {
   if (update.utime < utime_ || (update.utime == utime_ && update.seq <= seq_)) return ParamsOutcome::kNotNewer;
-  constexpr int32_t kKnown = ParamsUpdate::kWeights | ParamsUpdate::kLimits | ParamsUpdate::kMass | ParamsUpdate::kTracking;
+  constexpr int32_t kKnown = ParamsUpdate::kWeights | ParamsUpdate::kLimits | ParamsUpdate::kMass |
+                             ParamsUpdate::kTracking | ParamsUpdate::kLaw;
   if ((update.field_mask & ~kKnown) != 0) return ParamsOutcome::kInvalid;
   // The update is one change: a bad part the others' owners would refuse refuses it all here too.
   if ((update.field_mask & ParamsUpdate::kMass) && !kMassRange.contains(update.mass)) return ParamsOutcome::kInvalid;
@@ -65,7 +122,9 @@ ParamsOutcome RuntimeLqrParams::apply(const ParamsUpdate& update) {
       update.tracking != ReferenceMode::kTemporal) {
     return ParamsOutcome::kInvalid;
   }
+  if ((update.field_mask & ParamsUpdate::kLaw) && !isControlLaw(update.law)) return ParamsOutcome::kInvalid;
   LqrParams next = params_;
+  if (update.field_mask & ParamsUpdate::kLaw) next.law = update.law;
   if (update.field_mask & ParamsUpdate::kWeights) {
     next.q_diag = update.q_diag;
     next.r_diag = update.r_diag;

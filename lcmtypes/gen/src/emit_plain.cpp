@@ -45,7 +45,7 @@ void emitStruct(std::ostringstream& out, const PlainStruct& s) {
 // Eigen aliases of common/math/types.hpp that another package's structs name.
 void emitAliases(std::ostringstream& out, const PlainModel& model) {
   if (model.package == "sdlqr") return;
-  for (const char* name : {"Vec3", "Vec4", "Quat", "State", "Input", "GainMatrix", "identityQuat"}) {
+  for (const char* name : {"Vec3", "Vec4", "Quat", "State", "Input", "GainMatrix", "Mat4", "identityQuat"}) {
     out << "using ::sdlqr::" << name << ";\n";
   }
   out << "\n";

@@ -11,6 +11,7 @@ const std::vector<EigenType>& eigenTypes() {
   static const std::vector<EigenType> types = {
       {"Vec3", 3, 1, "Vec3::Zero()"},   {"Vec4", 4, 1, "Vec4::Zero()"},   {"Quat", 4, 1, "identityQuat()"},
       {"State", 10, 1, "State::Zero()"}, {"Input", 4, 1, "Input::Zero()"}, {"GainMatrix", 40, 10, "GainMatrix::Zero()"},
+      {"Mat4", 16, 4, "Mat4::Zero()"},
   };
   return types;
 }
@@ -213,7 +214,7 @@ class Builder {
     }
     if (elements > 0 && f.type == "double" && f.dimensions.size() - k == 1) {
       const EigenType* eigen = as.empty() ? defaultEigen(elements) : findEigen(as);
-      if (!as.empty() && !eigen) fail(s, f.line, "@as " + as + ": not one of Vec3 Vec4 Quat State Input GainMatrix");
+      if (!as.empty() && !eigen) fail(s, f.line, "@as " + as + ": not one of Vec3 Vec4 Quat State Input GainMatrix Mat4");
       if (eigen) {
         if (eigen->elements != elements) {
           fail(s, f.line, "@as " + as + " holds " + std::to_string(eigen->elements) + " numbers, '" + f.name + "' " +

@@ -89,6 +89,54 @@ TEST(ControllerAllocation, TicksAndSolvesAllocateNothing) {
   EXPECT_GT(controller.status().stale_ticks, 0);
 }
 
+// Every law of the family, switched in through PARAMS (with its bumpless transfer), its solver's
+// model in the scheduler too (the extensions' 12- and 10-state solves).
+TEST(ControllerAllocation, EveryLawTicksAndSolvesWithoutAllocating) {
+  const LqrParams lqr;
+  StateDependentLqr controller(lqr, ControllerParams{});
+  gains::GainScheduler scheduler(lqr, 10.0);
+  StateDependentLqr::Tick tick;
+  controller.onStateEstimate(estimateAt(0, Vec3::Zero()), tick);
+  controller.handleCommand(command(CommandType::kTakeoff, Vec3(0, 0, 1)));
+  int64_t ticks = 0, solves = 0;
+  auto fly = [&](int64_t from, int64_t to) {
+    for (int64_t utime = from; utime < to; utime += 4000) {
+      const double t = 1e-6 * static_cast<double>(utime);
+      const StateEstimate e = estimateAt(utime, Vec3(0.3 * std::sin(t), 0.2 * std::cos(t), 1.0));
+      GainSet gains;
+      if (scheduler.due(e) && scheduler.solve(e, gains) == SolveStatus::kOk) {
+        controller.setGains(gains);
+        ++solves;
+      }
+      if (controller.onStateEstimate(e, tick)) {
+        scheduler.setReference(tick.reference);
+        ++ticks;
+      }
+    }
+  };
+  fly(4000, 3'000'000);
+  const sdlqr::testing::AllocationCounter counter;
+  int64_t utime = 3'000'000;
+  int64_t seq = 0;
+  for (ControlLaw law : {ControlLaw::kHoverLqr, ControlLaw::kGeometric, ControlLaw::kSdlqrIntegral,
+                         ControlLaw::kSdlqrActuator, ControlLaw::kSdlqr}) {
+    ParamsUpdate update;
+    update.utime = utime;
+    update.seq = seq++;
+    update.field_mask = ParamsUpdate::kLaw;
+    update.law = law;
+    ASSERT_EQ(scheduler.applyParams(update), ParamsOutcome::kApplied);
+    ASSERT_EQ(controller.applyParams(update), ParamsOutcome::kApplied);
+    fly(utime, utime + 2'000'000);
+    utime += 2'000'000;
+    EXPECT_EQ(controller.status().law, law);
+  }
+  std::cout << "[ measured ] " << counter.count() << " allocations over " << ticks << " ticks and " << solves
+            << " solves of every law\n";
+  EXPECT_EQ(counter.count(), 0);
+  EXPECT_GE(controller.status().law_switches, 5);
+}
+
 TEST(ControllerAllocation, TheCounterSeesAllocations) {
   const sdlqr::testing::AllocationCounter counter;
   std::vector<int>* volatile escaped = new std::vector<int>(100);  // volatile: new/delete not elided

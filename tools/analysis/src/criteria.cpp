@@ -100,6 +100,12 @@ std::vector<CriterionSpec> makeCriteria() {
   pull.scope = S::kPull;
   pull.of_pull = [](const PullWindow& p) { return p.return_time; };
   c.push_back(pull);
+  CriterionSpec pull_overshoot = pull;
+  pull_overshoot.key = "pull_return_overshoot";
+  pull_overshoot.unit = "-";
+  pull_overshoot.description = "after release, travel past the setpoint, fraction of the pull's largest deviation";
+  pull_overshoot.of_pull = [](const PullWindow& p) { return p.return_overshoot; };
+  c.push_back(pull_overshoot);
   // Estimator and rates (simulation time).
   c.push_back(flight("estimator_position_rms", B::kAtMost, "m", "estimator position error RMS in hover",
                      [](const FlightReport& r) { return r.estimator.position_rms; }));

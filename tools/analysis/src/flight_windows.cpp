@@ -152,6 +152,19 @@ SetpointWindow setpointWindow(const logger::FlightLog& log, const Event& e, doub
   return w;
 }
 
+// The pull's return overshoot (PullWindow::return_overshoot), from its setpoint and release.
+double returnOvershoot(const logger::FlightLog& log, const PullWindow& p) {
+  Vec3 farthest = Vec3::Zero();
+  forTruthIn(log, p.start, p.end, [&](const SimTruth& s) {
+    if ((s.position - p.setpoint).norm() > farthest.norm()) farthest = s.position - p.setpoint;
+  });
+  if (farthest.norm() < 1e-9) return 0.0;
+  const Vec3 away = farthest.normalized();
+  double past = 0.0;
+  forTruthIn(log, p.release, p.end, [&](const SimTruth& s) { past = std::max(past, -(s.position - p.setpoint).dot(away)); });
+  return past / farthest.norm();
+}
+
 PullWindow pullWindow(const logger::FlightLog& log, const Event& e, double end, double return_error) {
   PullWindow p;
   p.label = e.label;
@@ -164,6 +177,7 @@ PullWindow pullWindow(const logger::FlightLog& log, const Event& e, double end, 
   const auto error_of = [&sp](const SimTruth& s) { return (s.position - sp).norm(); };
   forTruthIn(log, p.start, p.end, [&](const SimTruth& s) { p.max_deviation = std::max(p.max_deviation, error_of(s)); });
   p.return_time = settleTime(log, p.release, p.end, return_error, error_of);
+  p.return_overshoot = returnOvershoot(log, p);
   return p;
 }
 

@@ -137,6 +137,7 @@ void writeJson(const FlightReport& r, std::ostream& out) {
     writeVec3(json, "setpoint_m", p.setpoint);
     json.member("max_deviation_m", p.max_deviation);
     json.member("return_time_s", p.return_time);
+    json.member("return_overshoot", p.return_overshoot);
     json.endObject();
   }
   json.endArray();
@@ -327,9 +328,10 @@ void writeSetpoints(const FlightReport& r, std::ostream& out) {
 void writePulls(const FlightReport& r, std::ostream& out) {
   char line[512];
   for (const PullWindow& p : r.pulls) {
-    std::snprintf(line, sizeof line, "  %-18s %s: pushed %.2f m away, back within %s after %s\n", p.label.c_str(),
-                  describeDisturbance(p.disturbance).c_str(), p.max_deviation,
-                  formatQuantity(r.return_error, "m").c_str(), format("%.2f s", p.return_time).c_str());
+    std::snprintf(line, sizeof line, "  %-18s %s: pushed %.2f m away, back within %s after %s, %.0f %% past the setpoint\n",
+                  p.label.c_str(), describeDisturbance(p.disturbance).c_str(), p.max_deviation,
+                  formatQuantity(r.return_error, "m").c_str(), format("%.2f s", p.return_time).c_str(),
+                  100.0 * p.return_overshoot);
     out << line;
   }
 }

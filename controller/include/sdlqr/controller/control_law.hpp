@@ -24,6 +24,10 @@ struct ErrorBounds {
 // hemisphere of that q (ARCHITECTURE.md §3); the command is then the same for every sign choice.
 State stateError(const State& x, const State& x_ref, const Quat& q_lin, const ErrorBounds& bounds);
 
+// u with its body rates scaled to ||omega|| <= omega_max and its thrust clipped to [c_min, c_max]
+// (a projection onto a convex set: it never enlarges the difference of two commands).
+ControlOutput applyInputLimits(const Input& u, const LqrParams& limits);
+
 // u_ref + K (x - x_ref), body rates scaled to ||omega|| <= omega_max, thrust clipped to [c_min, c_max].
 // q_lin: the quaternion K was linearized at (GainSet::x_lin).
 ControlOutput applyControlLaw(const GainMatrix& K, const Quat& q_lin, const State& x, const State& x_ref,

@@ -29,6 +29,13 @@ struct ControllerParams {
   double rejoin_height;
   ReferenceMode tracking;  // for trajectories that do not say
   trajectory::TrajectoryGuardParams guard;  // aborts a trajectory that flies the vehicle away
+  // The law itself is lqr.law (the gain solver needs it too); these belong to the controller alone.
+  double switch_time_s;    // bumpless transfer between laws (bumpless_transfer.hpp)
+  double integral_limit;   // [m s] anti-windup bound on the norm of the position-error integral
+  double integral_zone;    // [m] the integral only integrates within this distance of the reference
+  Vec3 geometric_position_gain;     // [1/s^2] geometric_control.hpp kp x, y, z
+  Vec3 geometric_velocity_gain;     // [1/s] kd x, y, z
+  Vec3 geometric_attitude_gain;     // [1/s] k_att roll, pitch, yaw
 
   ControllerParams();
   static const ParamTable<ControllerParams>& declaration();

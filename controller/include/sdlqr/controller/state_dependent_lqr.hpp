@@ -3,10 +3,19 @@
 // takes the newest estimate, the reference of the tick and the newest valid K, and computes the
 // body-rate and thrust command. K comes from the gain solver at 10 Hz; when it goes stale the last
 // valid K is kept and flagged, and after a timeout a hover K computed here takes over.
+//
+// The law is lqr.law, switched in flight by PARAMS (FIELD_LAW) through a bumpless transfer
+// (bumpless_transfer.hpp): sdlqr (the above), hover_lqr (the hover K computed here, always),
+// geometric (geometric_control.hpp), sdlqr_integral and sdlqr_actuator (the extensions'
+// GAINS with their K_aug on the states kept in extension_states.hpp; until their first K arrives,
+// or when it goes past the fallback age, they run as sdlqr).
 
 #include "sdlqr/messages/messages.hpp"
 #include "sdlqr/math/lqr_params.hpp"
+#include "sdlqr/controller/bumpless_transfer.hpp"
 #include "sdlqr/controller/control_law.hpp"
+#include "sdlqr/controller/extension_states.hpp"
+#include "sdlqr/controller/geometric_control.hpp"
 #include "sdlqr/controller/controller_params.hpp"
 #include "sdlqr/controller/reference_generator.hpp"
 
@@ -20,6 +29,11 @@ struct ControllerStatus {
   int64_t fallback_ticks = 0;
   int64_t stale_ticks = 0;
   int64_t saturated_ticks = 0;
+  ControlLaw law = ControlLaw::kSdlqr;  // the law of the last tick
+  bool extension_active = false;        // the last tick used an extension's K_aug
+  bool transferring = false;            // the last tick was part of a bumpless transfer
+  int64_t law_switches = 0;             // transfers started
+  Input law_output = Input::Zero();     // the last tick's law command before the transfer (limited)
 };
 
 class StateDependentLqr {
@@ -56,9 +70,27 @@ class StateDependentLqr {
   const ControllerStatus& status() const { return status_; }
   const GainMatrix& fallbackGain() const { return fallback_K_; }
   const ReferenceGenerator& references() const { return references_; }
+  const Vec3& positionErrorIntegral() const { return integral_.value(); }
 
  private:
+  struct GainSlot {
+    GainSet gains;
+    bool has = false;
+  };
+  // What one law computed in a tick.
+  struct LawTick {
+    ControlOutput control;
+    GainsFreshness freshness = GainsFreshness::kFresh;
+    int64_t gains_seq = -1;
+    bool extension = false;
+  };
   const GainMatrix& chooseGain(int64_t now_utime, GainsFreshness& freshness, int64_t& gains_seq);
+  GainSlot& slotFor(ControlLaw law);
+  LawTick computeLaw(const StateEstimate& estimate, const Reference& reference);
+  LawTick lqrTick(const StateEstimate& estimate, const Reference& reference);
+  void hoverGain(const Reference& reference, GainMatrix& K, Quat& q_lin) const;
+  bool extensionFresh(const GainSlot& slot, int64_t now_utime) const;
+  void updateExtensionStates(const StateEstimate& estimate, const Reference& reference, const RateCommand& command);
 
   RuntimeLqrParams lqr_;
   ControllerParams params_;
@@ -66,6 +98,14 @@ class StateDependentLqr {
   GainMatrix fallback_K_;
   GainSet gains_;
   bool has_gains_ = false;
+  GainSlot integral_gains_, actuator_gains_;
+  PositionErrorIntegral integral_;
+  ThrustLagModel thrust_model_;
+  BumplessTransfer transfer_;
+  ControlLaw tick_law_ = ControlLaw::kSdlqr;  // law and extension of the last tick
+  bool tick_extension_ = false;
+  bool has_commanded_ = false;
+  Input last_command_ = Input::Zero();
   StateEstimate latest_;
   bool has_estimate_ = false;
   int64_t next_tick_utime_ = 0;

@@ -5,6 +5,7 @@
 // Clock-free: the caller measures the solve's wall time.
 
 #include "sdlqr/math/lqr.hpp"
+#include "sdlqr/math/lqr_extensions.hpp"
 #include "sdlqr/messages/messages.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 
@@ -27,8 +28,9 @@ class GainScheduler {
   bool due(const StateEstimate& estimate);
   // As due(), without moving on to the next grid time (the replay asks before it feeds).
   bool isDue(const StateEstimate& estimate) const { return estimate.utime >= next_utime_; }
-  // Linearize at (estimate, reference input), discretize, solve. `out` is complete but for
-  // solve_us. Never fills a non-finite K: on failure status != kOk and K is left zero.
+  // Linearize at (estimate, reference input), discretize, solve the model of the current law
+  // (lqr_extensions.hpp; GAINS law names it). `out` is complete but for solve_us. Never fills a
+  // non-finite K: on failure status != kOk and K, K_aug are left zero.
   SolveStatus solve(const StateEstimate& estimate, GainSet& out);
 
   const LqrParams& params() const { return lqr_.params(); }

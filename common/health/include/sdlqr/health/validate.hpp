@@ -50,7 +50,8 @@ RejectReason validate(const Trajectory& m, const ValidationLimits& limits);
 // The receiver's own stability check of a GAINS message that passed validate(): the model
 // linearized at (x_lin, u_lin), discretized at dt, reduced to the 9-state tangent system, closed
 // with K; kUnstable unless every eigenvalue lies inside the circle of radius max_spectral_radius.
-// A rogue or corrupted K with finite, in-range entries is caught here. No heap allocation.
+// A rogue or corrupted K with finite, in-range entries is caught here. No heap allocation. GAINS of
+// an extension (law sdlqr_integral, sdlqr_actuator) are closed on their own larger model, K_aug too.
 RejectReason validateClosedLoop(const GainSet& m, double max_spectral_radius = 0.9999);
 // Spectral radius of that tangent closed loop (NaN when it cannot be formed), for tests and logs.
 double closedLoopSpectralRadius(const GainSet& m);

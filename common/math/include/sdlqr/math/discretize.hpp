@@ -10,7 +10,8 @@
 // and the result squared s times. Fixed-size Eigen types only: no heap allocation.
 //
 // Instantiated in discretize.cpp for the sizes the project uses: expm<13>/discretizeZoh<9, 4>
-// (tangent system), expm<14>/discretizeZoh<10, 4> (full system), expm<2>, expm<3>/
+// (tangent system), expm<14>/discretizeZoh<10, 4> (full system, actuator extension), discretizeZoh<12, 4> (integral
+// extension), expm<2>, expm<3>/
 // discretizeZoh<2, 1> (analytic test cases).
 
 #include <Eigen/Core>

@@ -14,6 +14,15 @@ namespace sdlqr {
 
 enum class LqrMethod { kTangent, kIterative };
 
+// The control laws of the controller process (params_t LAW_*): the name in a vehicle file or a
+// scenario, and back. parseControlLaw returns false for an unknown name.
+const char* toString(ControlLaw law);
+bool parseControlLaw(const std::string& text, ControlLaw& out);
+// The names accepted, "sdlqr, hover_lqr, ...", for error messages.
+std::string controlLawNames();
+// True for a value of the enum (a PARAMS law field is an int8 from the wire).
+bool isControlLaw(ControlLaw law);
+
 // Each member is declared once (key, unit, default, range, help) in LqrParams::declaration()
 // (lqr_params.cpp); the default constructor takes the defaults from there.
 struct LqrParams {
@@ -27,6 +36,11 @@ struct LqrParams {
   LqrMethod method;
   double tolerance;
   int max_iterations;
+  // The law the controller runs and the model the gain solver solves for it (lqr_extensions.hpp).
+  ControlLaw law;
+  Vec3 q_integral;              // cost on the integral of the position error (sdlqr_integral) [1/(m s)^2]
+  double q_thrust;              // cost on the thrust state's deviation (sdlqr_actuator) [1/(m/s^2)^2]
+  double thrust_time_constant;  // [s] the model's collective-thrust lag (sdlqr_actuator)
 
   LqrParams();
   static const ParamTable<LqrParams>& declaration();
@@ -51,7 +65,8 @@ const char* toString(ParamsOutcome outcome);
 // The LQR parameters of a running gain solver or controller: those loaded, changed by PARAMS under
 // one rule for both (and for their replay):
 //   - an update not after the last applied one in (utime, seq) order is kNotNewer;
-//   - FIELD_WEIGHTS sets q_diag and r_diag, FIELD_LIMITS omega_max, c_min and c_max; FIELD_MASS
+//   - FIELD_WEIGHTS sets q_diag and r_diag, FIELD_LIMITS omega_max, c_min and c_max, FIELD_LAW the
+//     law (an unknown law is kInvalid); FIELD_MASS
 //     and FIELD_TRACKING belong to the bodyrate loop and the reference generator and change
 //     nothing here, but a mass outside kMassRange or an unknown tracking mode makes the whole
 //     update kInvalid, as does any other bit;

@@ -9,7 +9,7 @@
 // u = u0 + K (x - x0), so K = -(R + B^T X B)^-1 B^T X A is the NEGATIVE of the textbook gain.
 //
 // Everything is fixed-size and allocation-free. Instantiated in riccati.cpp for (N, M) =
-// (9, 4) tangent system, (10, 4) full system, (1, 1) and (2, 1) analytic test cases.
+// (9, 4) tangent system, (10, 4) full system and actuator extension, (12, 4) integral extension, (1, 1) and (2, 1) analytic test cases.
 
 #include <Eigen/Core>
 

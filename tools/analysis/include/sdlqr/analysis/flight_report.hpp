@@ -51,6 +51,10 @@ struct PullWindow {
   Vec3 setpoint = Vec3::Zero();   // [m]
   double max_deviation = 0.0;     // [m]
   double return_time = kNotReached;  // [s] after release, error stays below the return threshold
+  // [-] after release, the largest travel past the setpoint away from where the pull had taken
+  // the vehicle (along the deviation at its largest), over that largest deviation (Fig. 4: "very
+  // little overshoot")
+  double return_overshoot = 0.0;
 };
 
 struct EstimatorAccuracy {

@@ -54,6 +54,8 @@ struct Plant {
 };
 
 // The mission's re-sends are off by default (0): the loop has no restarted process to tell.
+// `plant`: the simulator's airframe when it differs from the one the stack assumes (a plant
+// mismatch: the bodyrate loop and the controller keep config.vehicle); nullptr: config.vehicle.
 class ClosedLoop : private Outbox {
  public:
   ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record = {},
