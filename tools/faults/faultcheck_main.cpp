@@ -112,11 +112,13 @@ int main(int argc, char** argv) {
     parser.addOption("--max-silence", &max_silence, "S",
                      "longest heartbeat gap of any process, and longest silence before the end of the log,\n"
                      "wall time (default 2.5)");
-    std::string expected_text, may_stop_text = "sdlqr-fuzz-publisher";
+    // The scenario player ends every run (policy `finish` in config/stack.procs): the others are
+    // stopped after it, so the log goes on without it for as long as their shutdown takes.
+    std::string expected_text, may_stop_text = "sdlqr-fuzz-publisher,sdlqr-mission";
     parser.addOption("--expect", &expected_text, "A,B,...", "processes that must have sent heartbeats");
     parser.addOption("--may-stop", &may_stop_text, "A,B,...",
                      "processes that may end before the log does, with a STOPPING heartbeat\n"
-                     "(default sdlqr-fuzz-publisher)");
+                     "(default sdlqr-fuzz-publisher,sdlqr-mission)");
     parser.addOption("--hover", &hover_text, "T0,T1,X,Y,Z",
                      "max |truth - (X,Y,Z)| over simulation time [T0, T1] s must stay below --max-hover-error");
     parser.addOption("--max-hover-error", &max_hover_error, "M", "default 0.1 m");
