@@ -191,23 +191,15 @@ TEST(Recomputation, ACommandTheControllerHeardLateDoesNotMakeTheReplayTickEarlie
   EXPECT_EQ(replay.outputs().rate_command.front().utime, recorded.rate_command.front().utime);
 }
 
-// The recorder reads GAINS and STATE_EST on sockets of their own: on a busy machine it logs a
-// solve before the estimate it was solved at, even before that estimate's IMU sample. Such a
-// GAINS is the replay's own solve, not a foreign one fed to the controller early.
-TEST(Recomputation, AGainsLoggedBeforeItsEstimateIsNotForeign) {
-  const ClosedLoopFlight& c = closedLoopFlight();
-  RecordedFlight recorded = replayedFlight();
-  for (size_t g = 0; g < recorded.gains.size(); ++g) {
-    const auto estimate = std::find_if(recorded.state_estimate.begin(), recorded.state_estimate.end(),
-                                       [&](const StateEstimate& e) { return e.seq == recorded.gains[g].state_seq; });
-    ASSERT_NE(estimate, recorded.state_estimate.end());
-    size_t at = positionOf(recorded, InputKind::kStateEstimate,
-                           static_cast<size_t>(estimate - recorded.state_estimate.begin()));
-    while (at > 0 && recorded.order[at - 1].kind != InputKind::kImu) --at;
-    if (at > 0) --at;  // before the IMU sample that completes the estimate
-    recorded.order.insert(recorded.order.begin() + static_cast<std::ptrdiff_t>(at),
-                          LogPosition{InputKind::kGains, static_cast<int32_t>(g)});
-  }
+// Where the recorded STATE_EST of `seq` sits in the recorder's order.
+size_t estimatePositionOf(const RecordedFlight& f, int64_t seq) {
+  const auto estimate = std::find_if(f.state_estimate.begin(), f.state_estimate.end(),
+                                     [&](const StateEstimate& e) { return e.seq == seq; });
+  if (estimate == f.state_estimate.end()) throw std::runtime_error("no estimate of that seq");
+  return positionOf(f, InputKind::kStateEstimate, static_cast<size_t>(estimate - f.state_estimate.begin()));
+}
+
+void expectNoForeignGainsAndBitForBit(const ClosedLoopFlight& c, const RecordedFlight& recorded) {
   Recomputation replay(test::paramsOf(c.config), recorded);
   replay.runToEnd();
   const Comparison comparison = compareOutputs(recorded, replay.outputs(), 0.0);
@@ -216,27 +208,34 @@ TEST(Recomputation, AGainsLoggedBeforeItsEstimateIsNotForeign) {
   EXPECT_TRUE(comparison.bitForBit());
 }
 
+// The recorder reads GAINS and STATE_EST on sockets of their own: on a busy machine it logs a
+// solve before the estimate it was solved at, even before that estimate's IMU sample. Such a
+// GAINS is the replay's own solve, not a foreign one fed to the controller early.
+TEST(Recomputation, AGainsLoggedBeforeItsEstimateIsNotForeign) {
+  const ClosedLoopFlight& c = closedLoopFlight();
+  RecordedFlight recorded = replayedFlight();
+  for (size_t g = 0; g < recorded.gains.size(); ++g) {
+    size_t at = estimatePositionOf(recorded, recorded.gains[g].state_seq);
+    while (at > 0 && recorded.order[at - 1].kind != InputKind::kImu) --at;
+    if (at > 0) --at;  // before the IMU sample that completes the estimate
+    recorded.order.insert(recorded.order.begin() + static_cast<std::ptrdiff_t>(at),
+                          LogPosition{InputKind::kGains, static_cast<int32_t>(g)});
+  }
+  expectNoForeignGainsAndBitForBit(c, recorded);
+}
+
 // The estimate too heard before its IMU sample, and the solve at it between the two.
 TEST(Recomputation, AGainsLoggedBetweenAnEarlyEstimateAndItsImuIsNotForeign) {
   const ClosedLoopFlight& c = closedLoopFlight();
   RecordedFlight recorded = replayedFlight();
   for (size_t g = 0; g < recorded.gains.size(); ++g) {
-    const auto estimate = std::find_if(recorded.state_estimate.begin(), recorded.state_estimate.end(),
-                                       [&](const StateEstimate& e) { return e.seq == recorded.gains[g].state_seq; });
-    ASSERT_NE(estimate, recorded.state_estimate.end());
-    const size_t at = positionOf(recorded, InputKind::kStateEstimate,
-                                 static_cast<size_t>(estimate - recorded.state_estimate.begin()));
+    const size_t at = estimatePositionOf(recorded, recorded.gains[g].state_seq);
     ASSERT_EQ(recorded.order[at - 1].kind, InputKind::kImu);
     std::swap(recorded.order[at - 1], recorded.order[at]);  // STATE_EST, then its IMU
     recorded.order.insert(recorded.order.begin() + static_cast<std::ptrdiff_t>(at),
                           LogPosition{InputKind::kGains, static_cast<int32_t>(g)});
   }
-  Recomputation replay(test::paramsOf(c.config), recorded);
-  replay.runToEnd();
-  const Comparison comparison = compareOutputs(recorded, replay.outputs(), 0.0);
-  std::cout << formatComparison(comparison);
-  EXPECT_EQ(replay.pairing().foreign_gains, 0);
-  EXPECT_TRUE(comparison.bitForBit());
+  expectNoForeignGainsAndBitForBit(c, recorded);
 }
 
 // A GAINS no solve of the replay matches, logged as early, is still foreign: judged by the
@@ -248,10 +247,7 @@ TEST(Recomputation, AForgedGainsLoggedBeforeItsEstimateIsStillForeign) {
   forged.seq = 100000;
   forged.K = -forged.K;  // destabilizing: the controller's closed-loop check refuses it
   recorded.gains.push_back(forged);
-  const size_t estimate = static_cast<size_t>(std::find_if(recorded.state_estimate.begin(), recorded.state_estimate.end(),
-                                                           [&](const StateEstimate& e) { return e.seq == forged.state_seq; }) -
-                                              recorded.state_estimate.begin());
-  const size_t at = positionOf(recorded, InputKind::kStateEstimate, estimate);
+  const size_t at = estimatePositionOf(recorded, forged.state_seq);
   recorded.order.insert(recorded.order.begin() + static_cast<std::ptrdiff_t>(at),
                         LogPosition{InputKind::kGains, static_cast<int32_t>(recorded.gains.size() - 1)});
   Recomputation replay(test::paramsOf(c.config), recorded);
