@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
     parser.addOption("--summary", &summary_path, "FILE", "also write the printed summary to FILE");
     parser.addOption("--calibration", &calibration_path, "FILE",
                      "this machine's bus measured before the flight (sdlqr-calibrate --out FILE): needed by\n"
-                     "the relative budgets (stack_cpu_relative_max, state_to_command_latency_relative_max)");
+                     "the relative budgets (stack_cpu_relative_max, state_to_command_latency_relative_max, rate_cmd_wall_jitter_relative_max)");
     parser.allowPositional(&positional, "LOG.lcmlog");
     parser.setEpilog("exit codes: 0 every check passes, 1 a check fails, 2 bad arguments or unreadable files");
     parser.parseOrExit(argc, argv);

@@ -230,7 +230,8 @@ void measureLoad(const logger::FlightLog& log, FlightReport& report) {
     report.state_to_command_p99_relative = report.state_to_command_us.p99 / report.calibration->oneWayP99Us();
   }
   if (report.calibration && report.rate_cmd_wall_jitter_us.count > 0) {
-    report.rate_cmd_wall_jitter_relative = report.rate_cmd_wall_jitter_us.p99 / report.calibration->oneWayP99Us();
+    report.rate_cmd_wall_jitter_relative = report.rate_cmd_wall_jitter_us.median / report.calibration->oneWayMedianUs();
+    report.rate_cmd_wall_jitter_p99_relative = report.rate_cmd_wall_jitter_us.p99 / report.calibration->oneWayP99Us();
   }
 }
 

@@ -434,10 +434,11 @@ void writeMeasurements(const FlightReport& r, std::ostream& out) {
     const calibrate::Calibration& c = *r.calibration;
     std::snprintf(line, sizeof line,
                   "  this machine (1 kHz ping/pong before the flight): round trip median %.0f us, p99 %.0f us, CPU "
-                  "%.1f %%; the flight stack used %.2fx that CPU, its latency median was %.2fx the one-way median, its "
-                  "latency p99 %.2fx and its wall-clock jitter p99 %.2fx the one-way p99\n",
+                  "%.1f %%; the flight stack used %.2fx that CPU; over the one-way median its latency median was %.2fx "
+                  "and its wall-clock jitter median %.2fx; over the one-way p99 (reported only) its latency p99 "
+                  "%.2fx and its jitter p99 %.2fx\n",
                   c.rtt_median_us, c.rtt_p99_us, c.cpu_percent, r.stack_cpu_relative, r.state_to_command_relative,
-                  r.state_to_command_p99_relative, r.rate_cmd_wall_jitter_relative);
+                  r.rate_cmd_wall_jitter_relative, r.state_to_command_p99_relative, r.rate_cmd_wall_jitter_p99_relative);
     out << line;
   }
   std::snprintf(line, sizeof line, "  max tilt %.1f deg, touchdown %.2f m/s%s, non-finite messages %lld\n", r.max_tilt_deg,

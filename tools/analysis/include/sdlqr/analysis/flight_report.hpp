@@ -151,7 +151,8 @@ struct FlightReport {
   double stack_cpu_relative = kNotReached;        // stack_cpu_percent / calibration cpu_percent
   double state_to_command_relative = kNotReached;  // median latency / calibration one-way median
   double state_to_command_p99_relative = kNotReached;  // p99 latency / calibration one-way p99
-  double rate_cmd_wall_jitter_relative = kNotReached;  // wall jitter p99 / calibration one-way p99
+  double rate_cmd_wall_jitter_relative = kNotReached;  // wall jitter median / calibration one-way median
+  double rate_cmd_wall_jitter_p99_relative = kNotReached;  // wall jitter p99 / calibration one-way p99
   int64_t nonfinite = 0;           // messages with NaN/Inf among estimates, commands, gains
   double max_tilt_deg = 0.0;
   double touchdown_speed = 0.0;    // [m/s] fastest vertical speed at a ground contact
