@@ -31,7 +31,7 @@ void BM_Flight(benchmark::State& state) {
   double simulated = 0.0;
   int flight = 0;
   for (auto _ : state) {
-    const FlightDraw draw = drawFlight(context().spec, context().config, flight++);
+    const FlightDraw draw = drawFlight(context().spec, context().config, context().scenario.sim, flight++);
     const FlownFlight flown = fly(context(), worldOf(context(), draw), "sdlqr");
     simulated += flown.world.scenario.duration;
     benchmark::DoNotOptimize(flown.report.checks.size());

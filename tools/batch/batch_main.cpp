@@ -43,8 +43,8 @@ int refly(const BatchContext& context, int flight, const std::string& controller
     throw ConfigError("--refly", "flight " + std::to_string(flight) + " not in 0.." + std::to_string(context.spec.flights - 1));
   }
   makeDirectories(out_dir);
-  const FlightDraw draw = drawFlight(context.spec, context.config, flight);
-  writeFlightFiles(context, draw, out_dir);
+  const FlightDraw draw = drawFlight(context.spec, context.config, context.scenario.sim, flight);
+  writeFlightFiles(context, draw, controller, out_dir);
   const FlownFlight flown = fly(context, loadFlightFiles(out_dir), controller);
   const std::string line = row(context, draw, controller, flown.report);
   writeFile(out_dir + "/row.csv", line);

@@ -54,6 +54,11 @@ std::string controlLawNames() {
   return names;
 }
 
+const std::vector<ControlLaw>& controlLaws() {
+  static const std::vector<ControlLaw> laws(std::begin(kLaws), std::end(kLaws));
+  return laws;
+}
+
 bool isControlLaw(ControlLaw law) {
   for (ControlLaw known : kLaws) {
     if (law == known) return true;

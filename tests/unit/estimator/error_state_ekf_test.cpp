@@ -71,6 +71,25 @@ TEST(ErrorStateEkf, TransitionMatrixMatchesFiniteDifferencesOfThePropagation) {
   EXPECT_LT(worst, 1e-7);
 }
 
+TEST(ErrorStateEkf, TheBlockwiseCovarianceTransformIsTheDenseProductForTheTransitionsShape) {
+  // GIVEN the transition of an agile window and a full covariance
+  const ErrorCovariance f = errorTransition(agileState(), agileDelta());
+  std::srand(7);
+  const ErrorCovariance a = ErrorCovariance::Random();
+  const ErrorCovariance p = a * a.transpose() + ErrorCovariance::Identity();
+
+  // THEN the block-wise F P F^T is the dense one to rounding
+  const ErrorCovariance dense = f * p * f.transpose();
+  EXPECT_LT((transformedCovariance(f, p) - dense).norm(), 1e-13 * dense.norm());
+
+  // AND a transition with a block outside that shape is not: the shape is a precondition the
+  // first check holds errorTransition() to.
+  ErrorCovariance other = f;
+  other.block<3, 3>(kErrGyroBias, kErrRot) = Mat3::Identity();
+  const ErrorCovariance other_dense = other * p * other.transpose();
+  EXPECT_GT((transformedCovariance(other, p) - other_dense).norm(), 1e-3 * other_dense.norm());
+}
+
 TEST(ErrorStateEkf, PropagationGrowsUncertaintyByTheNoiseModel) {
   // GIVEN a state at rest, level, with zero covariance
   EstimatorParams params;

@@ -53,7 +53,8 @@ double drawOne(const ParameterSpec& p, Stream& stream, int grid_index) {
 
 }  // namespace
 
-FlightDraw drawFlight(const BatchSpec& spec, const closedloop::StackConfig& nominal, int flight) {
+FlightDraw drawFlight(const BatchSpec& spec, const closedloop::StackConfig& nominal, const sim::SimStress& stress,
+                      int flight) {
   FlightDraw draw;
   draw.flight = flight;
   Stream seeds(spec.seed, flight, -1);
@@ -73,7 +74,7 @@ FlightDraw drawFlight(const BatchSpec& spec, const closedloop::StackConfig& nomi
     Stream stream(spec.seed, flight, static_cast<int>(i));
     double value = drawOne(p, stream, grid_index[i]);
     const bool whole_list = p.parameter.info.kind == ParamKind::kList && p.parameter.element < 0;
-    if (p.distribution.relative && !whole_list) value *= nominalValue(p.parameter, nominal);
+    if (p.distribution.relative && !whole_list) value *= nominalValue(p.parameter, nominal, stress);
     if (p.parameter.info.kind == ParamKind::kInteger) value = std::round(value);
     draw.values.push_back(value);
   }

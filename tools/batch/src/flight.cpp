@@ -92,13 +92,25 @@ FlightWorld worldOf(const BatchContext& context, const FlightDraw& draw) {
   }
 }
 
-FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std::string& /*controller*/) {
-  closedloop::ClosedLoop loop(context.config, world.plant, world.scenario);
+closedloop::StackConfig stackFlying(const BatchContext& context, const std::string& controller) {
+  closedloop::StackConfig config = context.config;
+  if (!parseControlLaw(controller, config.lqr.law)) {
+    throw ConfigError("controllers", "unknown controller '" + controller + "' (known: " + controlLawNames() + ")");
+  }
+  return config;
+}
+
+FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std::string& controller) {
+  const closedloop::StackConfig config = stackFlying(context, controller);
+  // MOTOR_CMD (1 kHz) is kept only for the criterion that judges it: rotors at the mixer's limits.
+  closedloop::RecordOptions record;
+  record.motor_command = world.scenario.criteria.count("rotor_at_limit_max") > 0;
+  closedloop::ClosedLoop loop(config, world.plant, world.scenario, record);
   loop.run();
   FlownFlight flown{world, loop.log(), {}};
+  // The limits the stack flies with (the controller's thrust, the mixer's rotors), not the plant's.
   analysis::AnalysisOptions options;
-  options.path.thrust_min = context.config.lqr.c_min;
-  options.path.thrust_max = context.config.lqr.c_max;
+  analysis::setVehicleLimits(options, config.lqr, config.vehicle);
   flown.report = analysis::analyzeFlight(flown.log, world.scenario, options);
   return flown;
 }
@@ -161,8 +173,15 @@ void writeFile(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-void writeFlightFiles(const BatchContext& context, const FlightDraw& draw, const std::string& dir) {
+void writeFlightFiles(const BatchContext& context, const FlightDraw& draw, const std::string& controller,
+                      const std::string& dir) {
   const FlightWorld world = worldOf(context, draw);
+  YAML::Node vehicle = YAML::Clone(loadYamlFile(context.scenario.vehicle_path));
+  vehicle["lqr"]["law"] = toString(stackFlying(context, controller).lqr.law);
+  YAML::Emitter vehicle_text;
+  vehicle_text << vehicle;
+  writeFile(dir + "/vehicle.yaml", "# " + absolute(context.scenario.vehicle_path) + " flying " + controller +
+                                       " (sdlqr-batch --refly)\n" + vehicle_text.c_str() + "\n");
   // The scenario file with the flown events: the disturbances the draw scaled and delayed.
   ScenarioPerturbation perturbation;
   for (size_t i = 0; i < context.spec.parameters.size(); ++i) {
@@ -172,7 +191,10 @@ void writeFlightFiles(const BatchContext& context, const FlightDraw& draw, const
     if (p.section_key == "disturbance_delay") perturbation.disturbance_delay = draw.values[i];
   }
   YAML::Node scenario = YAML::Clone(loadYamlFile(context.spec.scenario_path));
-  scenario["vehicle"] = absolute(context.scenario.vehicle_path);
+  scenario["vehicle"] = absolute(dir + "/vehicle.yaml");
+  const bool stressed = std::any_of(context.spec.parameters.begin(), context.spec.parameters.end(),
+                                    [](const ParameterSpec& p) { return p.parameter.target == Target::kStress; });
+  if (stressed) scenario["sim"] = stressNode(world.scenario.sim);
   scenario["seed"] = std::to_string(draw.seed);
   for (YAML::Node event : scenario["events"]) {
     if (event["trajectory"] && event["trajectory"]["csv"]) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace sdlqr::batch {
@@ -33,6 +34,7 @@ const std::vector<SectionOf>& sections() {
   static const std::vector<SectionOf> list = {
       {"vehicle", Target::kVehicle, &VehicleParams::declaration()},
       {"sim", Target::kSim, &sim::SimParams::declaration()},
+      {"sim", Target::kStress, &sim::SimStress::declaration()},
       {"scenario", Target::kScenario, &ScenarioPerturbation::declaration()},
   };
   return list;
@@ -99,19 +101,10 @@ T loadSection(const T& nominal, const char* name, Target target, const std::vect
   return changed ? T::declaration().load(ConfigReader(node, name)) : nominal;
 }
 
-}  // namespace
-
-PlantParameter findPlantParameter(const std::string& key, const std::string& where) {
-  const size_t dot = key.find('.');
-  const std::string section = key.substr(0, dot);
-  const auto it = std::find_if(sections().begin(), sections().end(),
-                               [&](const SectionOf& s) { return section == s.name; });
-  if (dot == std::string::npos || it == sections().end()) {
-    throw ConfigError(where, "expected vehicle.<key>, sim.<key> or scenario.<key> (sdlqr-batch --list-parameters)");
-  }
-  const auto [name, element] = splitElement(key.substr(dot + 1));
-  if (element == -2) throw ConfigError(where, "expected an element index as in inertia_diag[2]");
-  for (const ParamInfo& info : it->declaration->params()) {
+// The section's parameter `name`; nullopt when the section has none of that name.
+std::optional<PlantParameter> parameterOf(const SectionOf& s, const std::string& key, const std::string& name,
+                                          int element, const std::string& where) {
+  for (const ParamInfo& info : s.declaration->params()) {
     if (info.key != name) continue;
     if (!perturbable(info)) throw ConfigError(where, "not a perturbable number (the batch seeds every flight itself)");
     if (element >= 0 && (info.kind != ParamKind::kList || element >= info.size)) {
@@ -119,7 +112,26 @@ PlantParameter findPlantParameter(const std::string& key, const std::string& whe
                                    ? "index beyond the list's " + std::to_string(info.size) + " elements"
                                    : "not a list: no index");
     }
-    return PlantParameter{key, it->target, name, element, info};
+    return PlantParameter{key, s.target, name, element, info};
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+PlantParameter findPlantParameter(const std::string& key, const std::string& where) {
+  const size_t dot = key.find('.');
+  const std::string section = key.substr(0, dot);
+  const bool known = std::any_of(sections().begin(), sections().end(),
+                                 [&](const SectionOf& s) { return section == s.name; });
+  if (dot == std::string::npos || !known) {
+    throw ConfigError(where, "expected vehicle.<key>, sim.<key> or scenario.<key> (sdlqr-batch --list-parameters)");
+  }
+  const auto [name, element] = splitElement(key.substr(dot + 1));
+  if (element == -2) throw ConfigError(where, "expected an element index as in inertia_diag[2]");
+  for (const SectionOf& s : sections()) {
+    if (section != s.name) continue;
+    if (const auto found = parameterOf(s, key, name, element, where)) return *found;
   }
   throw ConfigError(where, "no such key in the " + section + " section (sdlqr-batch --list-parameters)");
 }
@@ -134,11 +146,12 @@ std::vector<PlantParameter> listPlantParameters() {
   return out;
 }
 
-double nominalValue(const PlantParameter& parameter, const closedloop::StackConfig& config) {
+double nominalValue(const PlantParameter& parameter, const closedloop::StackConfig& config, const sim::SimStress& stress) {
   YAML::Node section;
   switch (parameter.target) {
     case Target::kVehicle: section = sectionNode(config.vehicle); break;
     case Target::kSim: section = sectionNode(config.sim); break;
+    case Target::kStress: section = sectionNode(stress); break;
     case Target::kScenario: section = sectionNode(ScenarioPerturbation()); break;
   }
   const YAML::Node node = entry(section, parameter.section_key);
@@ -154,8 +167,11 @@ FlightWorld perturbedWorld(const closedloop::StackConfig& config, const mission:
   const ScenarioPerturbation perturbation =
       loadSection(ScenarioPerturbation(), "scenario", Target::kScenario, parameters, values);
   world.scenario = perturbedScenario(scenario, perturbation);
+  world.scenario.sim = loadSection(scenario.sim, "sim", Target::kStress, parameters, values);
   return world;
 }
+
+YAML::Node stressNode(const sim::SimStress& stress) { return sectionNode(stress); }
 
 mission::Scenario perturbedScenario(const mission::Scenario& scenario, const ScenarioPerturbation& perturbation) {
   mission::Scenario out = scenario;

@@ -47,7 +47,7 @@ RunResult runBatch(const BatchContext& context, const RunOptions& options) {
   auto worker = [&] {
     for (size_t i = next++; i < jobs.size() && !stop; i = next++) {
       try {
-        const FlightDraw draw = drawFlight(context.spec, context.config, jobs[i].flight);
+        const FlightDraw draw = drawFlight(context.spec, context.config, context.scenario.sim, jobs[i].flight);
         const FlownFlight flown = fly(context, worldOf(context, draw), jobs[i].controller);
         const std::string line = row(context, draw, jobs[i].controller, flown.report);
         std::lock_guard<std::mutex> lock(mutex);

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "sdlqr/math/lqr_params.hpp"
+
 namespace sdlqr::batch {
 
 namespace {
@@ -141,7 +143,7 @@ std::vector<std::string> controllerList(const YAML::Node& node) {
 const std::vector<KeyHelp>& specKeys() {
   static const std::vector<KeyHelp> keys = {
       {"scenario", "a name in config/scenarios/, or a scenario file (relative to the batch file)"},
-      {"controllers", "controllers compared on the same draws (known: sdlqr)"},
+      {"controllers", "controllers compared on the same draws: laws of the controller process (lqr.law), default [sdlqr]"},
       {"flights", "flights per controller (1 .. 10000000)"},
       {"seed", "seed of every draw and of every flight's noise (>= 0)"},
       {"parameters", "perturbed parameter -> distribution (sdlqr-batch --list-parameters)"},
@@ -160,7 +162,11 @@ const std::vector<KeyHelp>& distributionKeys() {
 }
 
 const std::vector<std::string>& knownControllers() {
-  static const std::vector<std::string> names = {"sdlqr"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (ControlLaw law : controlLaws()) out.emplace_back(toString(law));
+    return out;
+  }();
   return names;
 }
 

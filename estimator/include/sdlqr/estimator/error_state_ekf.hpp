@@ -28,6 +28,10 @@ void propagate(NavState& state, ErrorCovariance& covariance, const ImuDelta& del
 // d(error after) / d(error before) evaluated at `state` (before the update).
 void propagateNominal(NavState& state, const ImuDelta& delta, const Vec3& gravity);
 ErrorCovariance errorTransition(const NavState& state, const ImuDelta& delta);
+// F P F^T for an F of errorTransition()'s shape: the identity but for its blocks (p,v), (p,theta),
+// (p,ba), (v,theta), (v,ba), (theta,theta) and (theta,bg). Exposed for the test that holds it to
+// the dense product.
+ErrorCovariance transformedCovariance(const ErrorCovariance& f, const ErrorCovariance& p);
 
 struct PoseMeasurement {
   Vec3 position = Vec3::Zero();       // [m] world

@@ -166,8 +166,8 @@ TEST_F(SmallBatch, AReflownFlightReproducesItsRowFromItsFiles) {
   for (int flight : {4, 13}) {
     const std::string dir = freshDir("refly" + std::to_string(flight));
     makeDirectories(dir);
-    const FlightDraw draw = drawFlight(context_->spec, context_->config, flight);
-    writeFlightFiles(*context_, draw, dir);
+    const FlightDraw draw = drawFlight(context_->spec, context_->config, context_->scenario.sim, flight);
+    writeFlightFiles(*context_, draw, "sdlqr", dir);
     const FlownFlight flown = fly(*context_, loadFlightFiles(dir), "sdlqr");
     std::ostringstream batch_row;
     logger::CsvWriter csv(batch_row);
@@ -179,7 +179,7 @@ TEST_F(SmallBatch, AReflownFlightReproducesItsRowFromItsFiles) {
 
 TEST_F(SmallBatch, ThePlantItselfChangesTheFlight) {
   // Flight 0 flown on the nominal plant differs from its perturbed row: the draws reach the plant.
-  const FlightDraw draw = drawFlight(context_->spec, context_->config, 0);
+  const FlightDraw draw = drawFlight(context_->spec, context_->config, context_->scenario.sim, 0);
   FlightWorld nominal{{context_->config.vehicle, context_->config.sim}, context_->scenario};
   nominal.scenario.seed = draw.seed;
   const FlownFlight flown = fly(*context_, nominal, "sdlqr");
@@ -201,6 +201,63 @@ TEST(BatchRegions, APlantSixtyPercentHeavierFailsAndANominalOnePasses) {
   EXPECT_NE(summary.find("every check passed in 0/6"), std::string::npos) << summary;
   EXPECT_NE(summary.find("--refly"), std::string::npos);
   EXPECT_NE(summary.find("--plant-config"), std::string::npos);
+}
+
+// The cells of a row from its first parameter column on: what the flight drew and did.
+std::vector<std::string> outcome(const Table& t, size_t row) {
+  const auto& r = t.rows.at(row);
+  return std::vector<std::string>(r.begin() + t.column("pass"), r.end());
+}
+
+TEST(BatchControllers, EachControllerFliesItsOwnLawOnTheSameDrawsOfTheStressedWorld) {
+  const BatchContext context = BatchContext::load(kDir + "/controllers_in_wind.yaml");
+  const RunResult result = runIn(context, freshDir("controllers"), 2);
+  ASSERT_EQ(result.table.rows.size(), 6u);  // 2 flights x 3 controllers, flight-major
+  const int wind = result.table.column("sim.wind.steady[0]");
+  for (size_t flight = 0; flight < 2; ++flight) {
+    const size_t sdlqr = 3 * flight, hover_lqr = sdlqr + 1, geometric = sdlqr + 2;
+    EXPECT_EQ(result.table.rows[sdlqr][1], "sdlqr");
+    EXPECT_EQ(result.table.rows[geometric][1], "geometric");
+    EXPECT_EQ(result.table.rows[sdlqr][wind], result.table.rows[geometric][wind]);  // the same draw
+    EXPECT_NE(outcome(result.table, sdlqr), outcome(result.table, hover_lqr));
+    EXPECT_NE(outcome(result.table, sdlqr), outcome(result.table, geometric));
+    EXPECT_NE(outcome(result.table, hover_lqr), outcome(result.table, geometric));
+  }
+  // The stressors reach the simulator: flight 0 without them flies another flight.
+  const FlightDraw draw = drawFlight(context.spec, context.config, context.scenario.sim, 0);
+  FlightWorld calm = worldOf(context, draw);
+  calm.scenario.sim = sim::SimStress();
+  EXPECT_NE(row(context, draw, "sdlqr", fly(context, calm, "sdlqr").report),
+            row(context, draw, "sdlqr", fly(context, worldOf(context, draw), "sdlqr").report));
+}
+
+TEST(BatchControllers, AReflownFlightKeepsItsControllerAndItsStressors) {
+  const BatchContext context = BatchContext::load(kDir + "/controllers_in_wind.yaml");
+  const RunResult result = runIn(context, freshDir("controllers_refly_batch"), 2);
+  const std::string dir = freshDir("controllers_refly");
+  makeDirectories(dir);
+  const FlightDraw draw = drawFlight(context.spec, context.config, context.scenario.sim, 1);
+  writeFlightFiles(context, draw, "geometric", dir);
+  EXPECT_EQ(loadYamlFile(dir + "/vehicle.yaml")["lqr"]["law"].as<std::string>(), "geometric");
+  const FlightWorld files = loadFlightFiles(dir);
+  EXPECT_EQ(files.scenario.sim.wind.steady.x(), draw.values[0]);
+  EXPECT_EQ(files.scenario.sim.plant.thrust_scale, draw.values[2]);
+  std::ostringstream batch_row;
+  logger::CsvWriter csv(batch_row);
+  for (const std::string& cell : result.table.rows[5]) csv.name(cell);  // flight 1, geometric
+  csv.endRow();
+  EXPECT_EQ(row(context, draw, "geometric", fly(context, files, "geometric").report), batch_row.str());
+}
+
+TEST(BatchRegions, RotorsAtHalfThrustFailTheSaturationCriterionAndTheNominalOnesPass) {
+  const BatchContext weak = BatchContext::load(kDir + "/weak_rotors.yaml");
+  const RunResult bad = runIn(weak, freshDir("weak_rotors"), 2);
+  const int rotors = bad.table.column("rotor_at_limit_max");
+  for (const auto& r : bad.table.rows) EXPECT_EQ(r[rotors], "0") << r[0];
+  const BatchContext nominal = BatchContext::load(kDir + "/nominal_rotors.yaml");
+  const RunResult fine = runIn(nominal, freshDir("nominal_rotors"), 2);
+  for (const auto& r : fine.table.rows) EXPECT_EQ(r[rotors], "1") << r[0];
+  EXPECT_EQ(passedFlights(fine.table), static_cast<long long>(fine.table.rows.size()));
 }
 
 }  // namespace

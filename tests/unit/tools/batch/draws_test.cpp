@@ -13,15 +13,15 @@ const std::string kDir = SDLQR_SOURCE_DIR "/tests/unit/tools/batch";
 TEST(Draws, SameFlightSameDrawWhateverOrder) {
   const BatchSpec spec = BatchSpec::load(kDir + "/small_batch.yaml");
   const closedloop::StackConfig config;
-  const FlightDraw late = drawFlight(spec, config, 17);
-  for (int k = 0; k < 17; ++k) drawFlight(spec, config, k);
-  const FlightDraw again = drawFlight(spec, config, 17);
+  const FlightDraw late = drawFlight(spec, config, sim::SimStress(), 17);
+  for (int k = 0; k < 17; ++k) drawFlight(spec, config, sim::SimStress(), k);
+  const FlightDraw again = drawFlight(spec, config, sim::SimStress(), 17);
   EXPECT_EQ(late.seed, again.seed);
   EXPECT_EQ(late.values, again.values);
-  EXPECT_NE(drawFlight(spec, config, 16).values, late.values);
+  EXPECT_NE(drawFlight(spec, config, sim::SimStress(), 16).values, late.values);
   BatchSpec reseeded = spec;
   reseeded.seed = 12;
-  EXPECT_NE(drawFlight(reseeded, config, 17).values, late.values);
+  EXPECT_NE(drawFlight(reseeded, config, sim::SimStress(), 17).values, late.values);
 }
 
 TEST(Draws, ValuesFollowTheirDistributions) {
@@ -32,7 +32,7 @@ TEST(Draws, ValuesFollowTheirDistributions) {
   double inertia_sum = 0.0;
   const int n = 400;
   for (int k = 0; k < n; ++k) {
-    const FlightDraw d = drawFlight(spec, config, k);
+    const FlightDraw d = drawFlight(spec, config, sim::SimStress(), k);
     seeds.insert(d.seed);
     EXPECT_GE(d.seed, 0);
     EXPECT_GE(d.values[0], 0.25);  // vehicle.mass uniform [0.25, 0.26]

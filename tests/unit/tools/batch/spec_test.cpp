@@ -42,11 +42,25 @@ TEST(BatchSpec, LoadsTheSmallBatch) {
   EXPECT_FALSE(spec.fingerprint.empty());
 }
 
+TEST(BatchSpec, NamesEveryLawOfTheControllerAndTheScenariosStressors) {
+  const BatchSpec spec = BatchSpec::load(kDir + "/controllers_in_wind.yaml");
+  EXPECT_EQ(spec.controllers, (std::vector<std::string>{"sdlqr", "hover_lqr", "geometric"}));
+  ASSERT_EQ(spec.parameters.size(), 3u);
+  EXPECT_EQ(spec.parameters[0].parameter.target, Target::kStress);
+  EXPECT_EQ(spec.parameters[0].parameter.section_key, "wind.steady");
+  EXPECT_EQ(spec.parameters[0].parameter.element, 0);
+  EXPECT_EQ(refusedKey("all_laws", "controllers: [sdlqr, hover_lqr, geometric, sdlqr_integral, sdlqr_actuator]\n"),
+            "(accepted)");
+  EXPECT_EQ(refusedKey("stress_key", "parameters: {sim.wind.gusts: {uniform: [0, 1]}}\n"), "parameters.sim.wind.gusts");
+  EXPECT_EQ(refusedKey("stress_range", "parameters: {sim.plant.thrust_scale: {uniform: [-1, 1]}}\n"),
+            "parameters.sim.plant.thrust_scale.uniform[0]");
+}
+
 TEST(BatchSpec, RefusesEachMistakeNamingTheKey) {
   EXPECT_EQ(refusedKey("top", "flihgts: 3\n"), "flihgts");
   EXPECT_EQ(refusedKey("flights", "flights: 0\n"), "flights");
   EXPECT_EQ(refusedKey("seed", "seed: -1\n"), "seed");
-  EXPECT_EQ(refusedKey("controller", "controllers: [sdlqr, geometric]\n"), "controllers[1]");
+  EXPECT_EQ(refusedKey("controller", "controllers: [sdlqr, pid]\n"), "controllers[1]");
   EXPECT_EQ(refusedKey("controller_twice", "controllers: [sdlqr, sdlqr]\n"), "controllers[1]");
   EXPECT_EQ(refusedKey("controllers_empty", "controllers: []\n"), "controllers");
   EXPECT_EQ(refusedKey("section", "parameters: {lqr.dt: {uniform: [0.01, 0.02]}}\n"), "parameters.lqr.dt");

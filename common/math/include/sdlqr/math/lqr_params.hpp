@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "sdlqr/config/param_table.hpp"
 #include "sdlqr/math/model.hpp"
@@ -20,6 +21,8 @@ const char* toString(ControlLaw law);
 bool parseControlLaw(const std::string& text, ControlLaw& out);
 // The names accepted, "sdlqr, hover_lqr, ...", for error messages.
 std::string controlLawNames();
+// Every law, in the order of their names.
+const std::vector<ControlLaw>& controlLaws();
 // True for a value of the enum (a PARAMS law field is an int8 from the wire).
 bool isControlLaw(ControlLaw law);
 

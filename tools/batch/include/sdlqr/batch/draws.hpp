@@ -17,7 +17,9 @@ struct FlightDraw {
   std::vector<double> values;   // one per spec parameter, as the flight sets it (relative: applied)
 };
 
-FlightDraw drawFlight(const BatchSpec& spec, const closedloop::StackConfig& nominal, int flight);
+// `nominal` and `stress` (the scenario's `sim:` stressors) give relative parameters their nominal.
+FlightDraw drawFlight(const BatchSpec& spec, const closedloop::StackConfig& nominal, const sim::SimStress& stress,
+                      int flight);
 
 // Flights of shard `index` (1-based) of `count`: k with k mod count == index - 1.
 bool inShard(int flight, int index, int count);

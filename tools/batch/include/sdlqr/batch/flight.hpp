@@ -44,7 +44,9 @@ struct FlownFlight {
   analysis::FlightReport report;
 };
 
-// Flies one world with one controller (today every name flies the state-dependent LQR stack).
+// The nominal stack with the controller process running `controller` (a law of lqr.law).
+closedloop::StackConfig stackFlying(const BatchContext& context, const std::string& controller);
+// Flies one world with one controller.
 FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std::string& controller);
 // The world of a draw (throws ConfigError "flight 17: vehicle.mass: ..." when it is no valid plant).
 FlightWorld worldOf(const BatchContext& context, const FlightDraw& draw);
@@ -52,10 +54,12 @@ FlightWorld worldOf(const BatchContext& context, const FlightDraw& draw);
 std::string row(const BatchContext& context, const FlightDraw& draw, const std::string& controller,
                 const analysis::FlightReport& report);
 
-// Files that reproduce one flight away from the batch: scenario.yaml (its events as flown, the
-// flight's seed, the nominal vehicle file) and plant.yaml (the simulator's vehicle and sim
-// sections). `./sdlqr run scenario.yaml --plant-config plant.yaml` flies it over the bus.
-void writeFlightFiles(const BatchContext& context, const FlightDraw& draw, const std::string& dir);
+// Files that reproduce one flight away from the batch: scenario.yaml (its events and `sim:`
+// stressors as flown, the flight's seed, vehicle.yaml), vehicle.yaml (the nominal vehicle file
+// with lqr.law: controller) and plant.yaml (the simulator's vehicle and sim sections).
+// `./sdlqr run scenario.yaml --plant-config plant.yaml` flies it over the bus.
+void writeFlightFiles(const BatchContext& context, const FlightDraw& draw, const std::string& controller,
+                      const std::string& dir);
 FlightWorld loadFlightFiles(const std::string& dir);
 
 }  // namespace sdlqr::batch

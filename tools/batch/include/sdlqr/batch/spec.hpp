@@ -45,7 +45,7 @@ struct KeyHelp {
 const std::vector<KeyHelp>& specKeys();
 const std::vector<KeyHelp>& distributionKeys();
 
-// The controllers a batch may name (today the paper's state-dependent LQR alone).
+// The controllers a batch may name: the controller process's laws (lqr.law of a vehicle file).
 const std::vector<std::string>& knownControllers();
 
 struct BatchSpec {
