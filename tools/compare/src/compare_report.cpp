@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "sdlqr/compare/compare_files.hpp"
+#include "sdlqr/compare/compare_losses.hpp"
 #include "sdlqr/compare/compare_metrics.hpp"
 
 namespace sdlqr::compare {
@@ -157,69 +158,8 @@ void experimentSection(std::ostream& out, const ExperimentInfo& info, const Flig
   out << "\n![" << info.name << "](plots/" << info.name << ".png)\n\n";
 }
 
-// True when `other` failed no check that `reference` passed: its numbers compare with the
-// reference's (a flight that crashed or never finished its trajectory has small errors for a
-// reason that is no merit).
-bool failsOnlyWhere(const analysis::FlightReport& other, const analysis::FlightReport& reference) {
-  for (const analysis::Check& c : other.checks) {
-    if (c.pass) continue;
-    const bool reference_failed = std::any_of(reference.checks.begin(), reference.checks.end(),
-                                              [&](const analysis::Check& r) { return r.name == c.name && !r.pass; });
-    if (!reference_failed) return false;
-  }
-  return true;
-}
-
-// Every experiment and metric where another controller (one that failed no check sdlqr passed) is
-// kLossMargin lower than sdlqr, and every experiment sdlqr fails that another passes.
+// Where sdlqr is not the best (compare_losses.hpp), when it is compared with another controller.
 void lossesSection(std::ostream& out, const Benchmark& benchmark, const CompareResult& result) {
-  std::ostringstream rows;
-  for (const ExperimentInfo& info : result.experiments) {
-    const Flights flights = flightsOf(result, info.name);
-    const ExperimentFlight* paper = nullptr;
-    for (const ExperimentFlight* f : flights) {
-      if (f->controller == kPaperController) paper = f;
-    }
-    if (!paper) continue;
-    if (!paper->report.passed()) {
-      std::string passing;
-      for (const ExperimentFlight* f : flights) {
-        if (f->report.passed()) passing += (passing.empty() ? "" : ", ") + code(f->controller);
-      }
-      if (!passing.empty()) {
-        rows << "| " << info.name << " | every check | fails: " << cell(failedChecks(paper->report)) << " | "
-             << passing << " pass |\n";
-      }
-    }
-    for (const batch::Metric& m : compareMetrics()) {
-      const double mine = m.of(paper->report);
-      if (std::isnan(mine)) continue;
-      const ExperimentFlight* best = nullptr;
-      double best_value = mine;
-      for (const ExperimentFlight* f : flights) {
-        const double v = m.of(f->report);
-        if (f != paper && failsOnlyWhere(f->report, paper->report) && !std::isnan(v) && v < best_value) {
-          best = f;
-          best_value = v;
-        }
-      }
-      const bool lower = best && (std::isinf(mine) || best_value < mine - kLossMargin * std::abs(mine));
-      if (!lower) continue;
-      rows << "| " << info.name << " | " << m.name << " [" << m.unit << "] | " << formatValue(mine, m.unit) << " | "
-           << code(best->controller) << " " << formatValue(best_value, m.unit) << " |\n";
-    }
-  }
-  for (const SweepResult& s : result.sweeps) {
-    if (s.controller != kPaperController) continue;
-    for (const SweepResult& other : result.sweeps) {
-      const bool later = std::isnan(other.first_failing_speed) || other.first_failing_speed > s.first_failing_speed;
-      if (&other != &s && !std::isnan(s.first_failing_speed) && later) {
-        rows << "| " << kSweepName << " | first failing speed | " << speed(s.first_failing_speed) << " | "
-             << code(other.controller) << " "
-             << (std::isnan(other.first_failing_speed) ? "none" : speed(other.first_failing_speed)) << " |\n";
-      }
-    }
-  }
   const bool compared = std::find(benchmark.controllers.begin(), benchmark.controllers.end(), kPaperController) !=
                             benchmark.controllers.end() &&
                         benchmark.controllers.size() > 1;
@@ -229,12 +169,17 @@ void lossesSection(std::ostream& out, const Benchmark& benchmark, const CompareR
       << " % lower (better) than " << code(kPaperController) << ", with the best of them (among the controllers that "
       << "failed no check " << code(kPaperController) << " passed); every experiment it fails that another passes; "
       << "every controller whose sweep goes faster.\n\n";
-  if (rows.str().empty()) {
-    out << "None.\n";
+  const std::vector<Loss> losses = paperLosses(result);
+  if (losses.empty()) {
+    out << "None.\n\n";
     return;
   }
-  out << "| experiment | metric | " << code(kPaperController) << " | best other |\n| --- | --- | --- | --- |\n"
-      << rows.str() << "\n";
+  out << "| experiment | metric | " << code(kPaperController) << " | better |\n| --- | --- | --- | --- |\n";
+  for (const Loss& l : losses) {
+    out << "| " << l.experiment << " | " << l.what << " | " << cell(l.paper) << " | " << code(l.better) << " "
+        << l.value << " |\n";
+  }
+  out << "\n";
 }
 
 }  // namespace

@@ -16,10 +16,4 @@ std::string reportMarkdown(const Benchmark& benchmark, const CompareResult& resu
 // A metric value for a table: "—" when it does not apply (NaN), "never" when never reached (inf).
 std::string formatValue(double value, const std::string& unit);
 
-// The controller a comparison measures the others against.
-inline constexpr const char* kPaperController = "sdlqr";
-// How much lower another controller's value must be to count as sdlqr losing ("Where sdlqr is
-// not the best"): 5 %, so that the rounding noise of near-identical flights is not listed.
-inline constexpr double kLossMargin = 0.05;
-
 }  // namespace sdlqr::compare
