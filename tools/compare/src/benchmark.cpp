@@ -72,11 +72,34 @@ std::vector<std::string> criterionList(const YAML::Node& node, const std::string
   return out;
 }
 
+long long seedOf(const YAML::Node& node, const std::string& where) {
+  long long seed = -1;
+  try {
+    seed = node.as<long long>();
+  } catch (const YAML::Exception&) {
+    throw ConfigError(where, "expected an integer >= 0");
+  }
+  if (seed < 0) throw ConfigError(where, "expected an integer >= 0");
+  return seed;
+}
+
+std::vector<long long> seedList(const YAML::Node& node, const std::string& where) {
+  if (!node.IsSequence() || node.size() == 0) throw ConfigError(where, "expected a list of seeds");
+  std::vector<long long> out;
+  for (size_t i = 0; i < node.size(); ++i) {
+    const std::string at = where + "[" + std::to_string(i) + "]";
+    const long long seed = seedOf(node[i], at);
+    if (std::find(out.begin(), out.end(), seed) != out.end()) throw ConfigError(at, "seed " + std::to_string(seed) + " named twice");
+    out.push_back(seed);
+  }
+  return out;
+}
+
 SpeedSweep sweepOf(const YAML::Node& node, const std::string& dir) {
   const std::string where = "speed_sweep";
   if (!node.IsMap()) throw ConfigError(where, "expected {scenario, speeds, fail_on}");
   const ConfigReader reader(node, where);
-  reader.allowOnly({"scenario", "speeds", "fail_on"});
+  reader.allowOnly({"scenario", "speeds", "fail_on", "seeds"});
   for (const char* key : {"scenario", "speeds", "fail_on"}) {
     if (!node[key]) throw ConfigError(reader.keyPath(key), "missing");
   }
@@ -94,18 +117,8 @@ SpeedSweep sweepOf(const YAML::Node& node, const std::string& dir) {
     }
   }
   sweep.fail_on = criterionList(node["fail_on"], where + ".fail_on", scenario);
+  if (node["seeds"]) sweep.seeds = seedList(node["seeds"], where + ".seeds");
   return sweep;
-}
-
-long long seedOf(const YAML::Node& node) {
-  long long seed = -1;
-  try {
-    seed = node.as<long long>();
-  } catch (const YAML::Exception&) {
-    throw ConfigError("seed", "expected an integer >= 0");
-  }
-  if (seed < 0) throw ConfigError("seed", "expected an integer >= 0");
-  return seed;
 }
 
 }  // namespace
@@ -115,7 +128,7 @@ const std::vector<batch::KeyHelp>& benchmarkKeys() {
       {"controllers", "controllers compared: laws of the controller process (lqr.law); default every law"},
       {"experiments", "scenarios each controller flies: names in config/scenarios/, or files (relative to this file)"},
       {"seed", "every flight's noise seed (>= 0); absent: each scenario's own"},
-      {"speed_sweep", "{scenario, speeds, fail_on}: one closed path flown at rising speeds until fail_on fails"},
+      {"speed_sweep", "{scenario, speeds, fail_on, seeds}: one closed path flown at rising speeds until fail_on fails"},
   };
   return keys;
 }
@@ -140,7 +153,7 @@ Benchmark Benchmark::load(const std::string& path) {
     b.has_sweep = true;
     b.sweep = sweepOf(root["speed_sweep"], dir);
   }
-  if (root["seed"]) b.seed = seedOf(root["seed"]);
+  if (root["seed"]) b.seed = seedOf(root["seed"], "seed");
   return b;
 }
 

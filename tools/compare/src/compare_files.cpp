@@ -64,8 +64,8 @@ std::string flightsCsv(const CompareResult& result) {
 std::string sweepCsv(const CompareResult& result) {
   std::ostringstream text;
   logger::CsvWriter csv(text);
-  for (const char* name : {"controller", "speed [m/s]", "result", "path_error_rms [m]", "path_error_max [m]",
-                           "max_tilt_deg [deg]", "failed_checks"}) {
+  for (const char* name : {"controller", "speed [m/s]", "result", "flights", "path_error_rms [m]",
+                           "path_error_max [m]", "max_tilt_deg [deg]", "failed_checks"}) {
     csv.name(name);
   }
   csv.endRow();
@@ -74,6 +74,7 @@ std::string sweepCsv(const CompareResult& result) {
       csv.name(s.controller);
       csv.real(f.speed);
       csv.name(!f.feasible ? "infeasible" : (f.pass ? "pass" : "fail"));
+      csv.integer(f.flights);
       csv.real(f.path_error_rms);
       csv.real(f.path_error_max);
       csv.real(f.max_tilt_deg);

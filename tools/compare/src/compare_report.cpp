@@ -82,8 +82,12 @@ void summary(std::ostream& out, const Benchmark& benchmark, const CompareResult&
 void sweepSection(std::ostream& out, const Benchmark& benchmark, const CompareResult& result) {
   const SpeedSweep& sweep = benchmark.sweep;
   out << "## " << kSweepName << ": " << result.sweep.name << "\n\n"
-      << result.sweep.description << " (" << code(sourceRelative(result.sweep.scenario_path)) << ", seed "
-      << result.sweep.seed << "). Each controller flies it at rising speed, slowest first, until a speed fails ";
+      << result.sweep.description << " (" << code(sourceRelative(result.sweep.scenario_path)) << ", "
+      << (result.sweep_seeds.size() > 1 ? "seeds " : "seed ");
+  for (size_t i = 0; i < result.sweep_seeds.size(); ++i) out << (i ? ", " : "") << result.sweep_seeds[i];
+  out << (result.sweep_seeds.size() > 1 ? ": a speed passes when it passes with every seed, its errors are the worst seed's"
+                                        : "")
+      << "). Each controller flies it at rising speed, slowest first, until a speed fails ";
   for (size_t i = 0; i < sweep.fail_on.size(); ++i) {
     out << (i ? " or " : "") << code(sweep.fail_on[i]) << " ≤ " << printf3g(result.sweep_limits[i]) << " m";
   }

@@ -65,10 +65,9 @@ CompareResult runCompare(const Benchmark& benchmark, const CompareOptions& optio
   std::mutex print_mutex;
   int landed = 0;
   const size_t total = result.flights.size();
-  // `simulated_s` 0: nothing was flown (a speed beyond the vehicle), only reported.
-  auto say = [&](const std::string& line, double simulated_s) {
+  auto say = [&](const std::string& line, int flights, double simulated_s) {
     const std::lock_guard<std::mutex> lock(print_mutex);
-    result.flown += simulated_s > 0.0 ? 1 : 0;
+    result.flown += flights;
     result.simulated_s += simulated_s;
     if (options.progress) std::fprintf(options.progress, "compare: %s\n", line.c_str());
   };
@@ -81,16 +80,19 @@ CompareResult runCompare(const Benchmark& benchmark, const CompareOptions& optio
     result.sweep = {s.name, s.description, benchmark.sweep.scenario_path, s.seed};
     for (const std::string& key : benchmark.sweep.fail_on) result.sweep_limits.push_back(s.criteria.at(key));
     result.refusals = sweepRefusals(sweep_context, benchmark.sweep.speeds);
+    result.sweep_seeds = sweepSeeds(benchmark, s);
     result.sweeps.resize(controllers);
     // The sweeps first: each is several flights in a row, the longest tasks.
     for (size_t c = 0; c < controllers; ++c) {
       tasks.push_back([&, c] {
         const std::string& controller = benchmark.controllers[c];
-        result.sweeps[c] = flySweep(sweep_context, benchmark.sweep, result.refusals, controller, [&](const SweepFlight& f) {
+        result.sweeps[c] = flySweep(sweep_context, benchmark.sweep, result.sweep_seeds, result.refusals, controller,
+                                    [&](const SweepFlight& f) {
           const std::string what = !f.feasible ? "beyond the vehicle, not flown"
                                    : (f.pass ? "pass" : "FAIL") + std::string(" (path error RMS ") +
                                          number(f.path_error_rms) + " m, max " + number(f.path_error_max) + " m)";
-          say(std::string(kSweepName) + " " + controller + " at " + number(f.speed) + " m/s: " + what, f.simulated_s);
+          say(std::string(kSweepName) + " " + controller + " at " + number(f.speed) + " m/s: " + what, f.flights,
+              f.simulated_s);
         });
       });
     }
@@ -107,7 +109,7 @@ CompareResult runCompare(const Benchmark& benchmark, const CompareOptions& optio
         }
         say("[" + std::to_string(number_landed) + "/" + std::to_string(total) + "] " + slot.experiment + " " +
                 slot.controller + ": " + (slot.report.passed() ? "pass" : "FAIL") + ", " + checksText(slot.report),
-            slot.simulated_s);
+            1, slot.simulated_s);
       });
     }
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "sdlqr/batch/metric.hpp"
 #include "sdlqr/mission/trajectory_request.hpp"
@@ -57,29 +58,40 @@ std::vector<std::string> sweepRefusals(const batch::BatchContext& context, const
   return out;
 }
 
+std::vector<long long> sweepSeeds(const Benchmark& benchmark, const mission::Scenario& scenario) {
+  if (benchmark.seed >= 0) return {benchmark.seed};
+  return benchmark.sweep.seeds.empty() ? std::vector<long long>{scenario.seed} : benchmark.sweep.seeds;
+}
+
 SweepFlight flySweepSpeed(const batch::BatchContext& context, const std::vector<std::string>& fail_on,
-                          const std::string& controller, double speed) {
-  const batch::FlightWorld world{{context.config.vehicle, context.config.sim}, atSpeed(context.scenario, speed)};
-  const batch::FlownFlight flown = batch::fly(context, world, controller);
-  const analysis::FlightReport& r = flown.report;
+                          const std::string& controller, double speed, const std::vector<long long>& seeds) {
   SweepFlight f;
   f.speed = speed;
-  int judged = 0, passed = 0;
-  for (const analysis::Check& c : r.checks) {
-    if (!c.pass) f.failed.push_back(c.name);
-    if (std::find(fail_on.begin(), fail_on.end(), c.key) == fail_on.end()) continue;
-    ++judged;
-    passed += c.pass ? 1 : 0;
+  f.pass = true;
+  auto worst = [](double& into, double v) { into = std::isnan(into) || v > into || std::isnan(v) ? v : into; };
+  for (long long seed : seeds) {
+    batch::FlightWorld world{{context.config.vehicle, context.config.sim}, atSpeed(context.scenario, speed)};
+    world.scenario.seed = seed;
+    const analysis::FlightReport r = batch::fly(context, world, controller).report;
+    const std::string prefix = seeds.size() > 1 ? "seed " + std::to_string(seed) + ": " : "";
+    int judged = 0, passed = 0;
+    for (const analysis::Check& c : r.checks) {
+      if (!c.pass) f.failed.push_back(prefix + c.name);
+      if (std::find(fail_on.begin(), fail_on.end(), c.key) == fail_on.end()) continue;
+      ++judged;
+      passed += c.pass ? 1 : 0;
+    }
+    f.pass = f.pass && judged > 0 && passed == judged;
+    worst(f.path_error_rms, batch::largestOf(r.trajectories, [](const analysis::PathTrackingReport& t) { return t.path_error_rms; }));
+    worst(f.path_error_max, batch::largestOf(r.trajectories, [](const analysis::PathTrackingReport& t) { return t.path_error_max; }));
+    worst(f.max_tilt_deg, r.max_tilt_deg);
+    ++f.flights;
+    f.simulated_s += world.scenario.duration;
   }
-  f.pass = judged > 0 && passed == judged;
-  f.path_error_rms = batch::largestOf(r.trajectories, [](const analysis::PathTrackingReport& t) { return t.path_error_rms; });
-  f.path_error_max = batch::largestOf(r.trajectories, [](const analysis::PathTrackingReport& t) { return t.path_error_max; });
-  f.max_tilt_deg = r.max_tilt_deg;
-  f.simulated_s = world.scenario.duration;
   return f;
 }
 
-SweepResult flySweep(const batch::BatchContext& context, const SpeedSweep& sweep,
+SweepResult flySweep(const batch::BatchContext& context, const SpeedSweep& sweep, const std::vector<long long>& seeds,
                      const std::vector<std::string>& refusals, const std::string& controller,
                      const std::function<void(const SweepFlight&)>& landed) {
   SweepResult result;
@@ -95,7 +107,7 @@ SweepResult flySweep(const batch::BatchContext& context, const SpeedSweep& sweep
       if (landed) landed(refused);
       break;
     }
-    result.flights.push_back(flySweepSpeed(context, sweep.fail_on, controller, speed));
+    result.flights.push_back(flySweepSpeed(context, sweep.fail_on, controller, speed, seeds));
     if (landed) landed(result.flights.back());
     if (!result.flights.back().pass) {
       result.first_failing_speed = speed;

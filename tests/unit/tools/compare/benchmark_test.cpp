@@ -50,6 +50,7 @@ TEST(Benchmark, TheShippedBenchmarkLoadsEveryLawEveryExperimentAndTheSweep) {
   EXPECT_EQ(names, expected);
   ASSERT_TRUE(b.has_sweep);
   EXPECT_EQ(b.sweep.fail_on, (std::vector<std::string>{"path_error_rms", "path_error_max"}));
+  EXPECT_EQ(b.sweep.seeds, (std::vector<long long>{21, 1, 2}));
   EXPECT_EQ(b.seed, -1);
 }
 
@@ -81,6 +82,13 @@ TEST(Benchmark, BadKeysAreRefusedNamingTheKey) {
   EXPECT_EQ(errorKey("speed_sweep: {scenario: " + kDir + "/short_circle.yaml, speeds: [1.0]}\n"), "speed_sweep.fail_on");
   EXPECT_EQ(errorKey("speed_sweep: {scenario: " + kDir + "/short_circle.yaml, speed: [1.0], fail_on: [path_error_rms]}\n"),
             "speed_sweep.speed");
+  const std::string circle = kDir + "/short_circle.yaml";
+  EXPECT_EQ(errorKey("speed_sweep: {scenario: " + circle + ", speeds: [1.0], fail_on: [path_error_rms], seeds: [1, -2]}\n"),
+            "speed_sweep.seeds[1]");
+  EXPECT_EQ(errorKey("speed_sweep: {scenario: " + circle + ", speeds: [1.0], fail_on: [path_error_rms], seeds: [4, 4]}\n"),
+            "speed_sweep.seeds[1]");
+  EXPECT_EQ(errorKey("speed_sweep: {scenario: " + circle + ", speeds: [1.0], fail_on: [path_error_rms], seeds: []}\n"),
+            "speed_sweep.seeds");
   EXPECT_EQ(errorKey(sweepOf("[1.0]")), "");
 }
 

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -154,6 +155,31 @@ TEST(SpeedSweep, FindsTheFailingSpeedOnARangeBeyondThePathCriteria) {
   }
   const std::string report = reportMarkdown(b, r);
   EXPECT_NE(report.find("fail**"), std::string::npos);
+}
+
+TEST(SpeedSweep, EachSpeedFliesEverySeedAndPassesOnlyWhenEveryOnePasses) {
+  Benchmark b = Benchmark::load(kDir + "/small_benchmark.yaml");
+  b.experiments.clear();
+  b.controllers = {"sdlqr"};
+  b.sweep.speeds = {1.0};
+  b.sweep.seeds = {5, 6};
+  const CompareResult r = runQuietly(b, 2);
+  EXPECT_EQ(r.sweep_seeds, (std::vector<long long>{5, 6}));
+  ASSERT_EQ(r.sweeps.size(), 1u);
+  ASSERT_EQ(r.sweeps[0].flights.size(), 1u);
+  const SweepFlight& both = r.sweeps[0].flights[0];
+  EXPECT_EQ(both.flights, 2);
+  EXPECT_EQ(r.flown, 2);
+  // Its errors are the worse seed's.
+  const batch::BatchContext context = scenarioContext(b.sweep.scenario_path, b.controllers, -1);
+  const SweepFlight five = flySweepSpeed(context, b.sweep.fail_on, "sdlqr", 1.0, {5});
+  const SweepFlight six = flySweepSpeed(context, b.sweep.fail_on, "sdlqr", 1.0, {6});
+  EXPECT_NE(five.path_error_rms, six.path_error_rms) << "the seeds fly differently";
+  EXPECT_EQ(both.path_error_rms, std::max(five.path_error_rms, six.path_error_rms));
+  EXPECT_EQ(both.pass, five.pass && six.pass);
+  // A seed of the benchmark (--seed) replaces the sweep's.
+  b.seed = 9;
+  EXPECT_EQ(sweepSeeds(b, context.scenario), std::vector<long long>{9});
 }
 
 TEST(SpeedSweep, ASpeedBeyondTheVehicleIsRefusedForEveryControllerNotFlown) {

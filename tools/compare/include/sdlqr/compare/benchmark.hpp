@@ -9,6 +9,7 @@
 //     scenario: circle_sweep.yaml                 # one circle, lemniscate or waypoints trajectory event
 //     speeds: [1.0, 1.5, 2.0]                     # [m/s] strictly increasing; flown until a speed fails
 //     fail_on: [path_error_rms, path_error_max]   # trajectory criteria of that scenario that decide it
+//     seeds: [21, 1, 2]                           # optional: a speed passes when it passes with every seed
 //
 // Each key is declared once below (benchmarkKeys()); load() throws ConfigError naming the key
 // ("speed_sweep.speeds[2]: must be above speeds[1]").
@@ -24,6 +25,7 @@ struct SpeedSweep {
   std::string scenario_path;          // resolved
   std::vector<double> speeds;         // [m/s]
   std::vector<std::string> fail_on;   // criterion keys
+  std::vector<long long> seeds;       // empty: the scenario's own (a benchmark or --seed seed replaces them)
 };
 
 struct Experiment {

@@ -5,7 +5,8 @@
 //   DIR/report.md                 the tables (compare_report.hpp)
 //   DIR/flights.csv               one row per experiment and controller: pass, the checks, every
 //                                 metric of compareMetrics()
-//   DIR/sweep.csv                 one row per controller and speed asked: pass|fail|infeasible, path errors
+//   DIR/sweep.csv                 one row per controller and speed asked: pass|fail|infeasible, the
+//                                 flights (one per seed), the worst seed's path errors and tilt
 //   DIR/tracks/<experiment>.csv   controller, t, x, y, z: SIM_TRUTH at 25 Hz, every controller
 //   DIR/tracks/<experiment>.path.csv  segment, x, y, z: the uploaded trajectories' samples (when any)
 //

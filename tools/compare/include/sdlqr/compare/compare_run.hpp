@@ -33,6 +33,7 @@ struct CompareResult {
   std::vector<std::string> refusals;      // per sweep speed: empty, or why the path is beyond the vehicle
   ExperimentInfo sweep;                   // the sweep's scenario
   std::vector<double> sweep_limits;       // the scenario's limit of each fail_on criterion
+  std::vector<long long> sweep_seeds;     // each speed flies once per seed
   int flown = 0;
   double simulated_s = 0.0;
   double wall_s = 0.0;                    // reported on stderr only: never in the files

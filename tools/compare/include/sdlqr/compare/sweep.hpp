@@ -30,6 +30,7 @@ struct SweepFlight {
   double path_error_rms = std::numeric_limits<double>::quiet_NaN();  // [m] worst trajectory
   double path_error_max = std::numeric_limits<double>::quiet_NaN();
   double max_tilt_deg = std::numeric_limits<double>::quiet_NaN();
+  int flights = 0;                     // one per seed
   double simulated_s = 0.0;
 };
 
@@ -44,12 +45,17 @@ struct SweepResult {
 // ("events[3].trajectory: at 5 m/s the path is beyond the vehicle: ...").
 std::vector<std::string> sweepRefusals(const batch::BatchContext& context, const std::vector<double>& speeds);
 
-// One flight at one speed, judged on `fail_on`.
+// One speed: a flight per seed, judged on `fail_on`; it passes when every seed's flight passes, its
+// path errors and tilt are the worst seed's, its failed checks every seed's ("seed 1: crashed").
 SweepFlight flySweepSpeed(const batch::BatchContext& context, const std::vector<std::string>& fail_on,
-                          const std::string& controller, double speed);
+                          const std::string& controller, double speed, const std::vector<long long>& seeds);
+
+// The seeds a sweep flies: the benchmark's seed when it sets one (or --seed), else the sweep's
+// seeds, else the scenario's own.
+std::vector<long long> sweepSeeds(const Benchmark& benchmark, const mission::Scenario& scenario);
 
 // The sweep of one controller; `landed` hears of each speed flown (progress).
-SweepResult flySweep(const batch::BatchContext& context, const SpeedSweep& sweep,
+SweepResult flySweep(const batch::BatchContext& context, const SpeedSweep& sweep, const std::vector<long long>& seeds,
                      const std::vector<std::string>& refusals, const std::string& controller,
                      const std::function<void(const SweepFlight&)>& landed = {});
 
