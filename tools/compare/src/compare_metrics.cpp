@@ -64,6 +64,8 @@ std::vector<batch::Metric> makeMetrics() {
          return batch::largestOf(r.trajectories, [](const PathTrackingReport& t) { return double(t.skipped.size()); });
        }},
       {"path_return_time", "s", pathReturnTime},
+      {"trajectory_aborts", "count",  // by the controller's guard, of flights that tracked a trajectory
+       [](const FlightReport& r) { return r.trajectories.empty() ? kNaN : static_cast<double>(r.trajectory_aborts); }},
       batchMetric("jump_settle_time_max"),
       {"jump_overshoot_max", "%", jumpOvershootPercent},
       batchMetric("hover_error_max"),
