@@ -16,17 +16,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-template <class Container, class Of>
-double largest(const Container& items, Of of) {
-  double worst = kNaN;
-  for (const auto& item : items) {
-    const double v = of(item);
-    if (std::isnan(v)) return std::numeric_limits<double>::infinity();  // never reached: worst of all
-    worst = std::isnan(worst) ? v : std::max(worst, v);
-  }
-  return worst;
-}
-
 }  // namespace
 
 const std::vector<Metric>& flightMetrics() {
@@ -39,15 +28,15 @@ const std::vector<Metric>& flightMetrics() {
          std::vector<analysis::SetpointWindow> jumps;
          std::copy_if(r.setpoints.begin(), r.setpoints.end(), std::back_inserter(jumps),
                       [](const analysis::SetpointWindow& w) { return w.is_jump; });
-         return largest(jumps, [](const analysis::SetpointWindow& w) { return w.settle_time; });
+         return largestOf(jumps, [](const analysis::SetpointWindow& w) { return w.settle_time; });
        }},
       {"hover_error_max", "m",
-       [](const R& r) { return largest(r.setpoints, [](const analysis::SetpointWindow& w) { return w.steady_error; }); }},
+       [](const R& r) { return largestOf(r.setpoints, [](const analysis::SetpointWindow& w) { return w.steady_error; }); }},
       {"pull_deviation_max", "m",
-       [](const R& r) { return largest(r.pulls, [](const analysis::PullWindow& w) { return w.max_deviation; }); }},
+       [](const R& r) { return largestOf(r.pulls, [](const analysis::PullWindow& w) { return w.max_deviation; }); }},
       {"path_error_rms_max", "m",
        [](const R& r) {
-         return largest(r.trajectories, [](const analysis::PathTrackingReport& t) { return t.path_error_rms; });
+         return largestOf(r.trajectories, [](const analysis::PathTrackingReport& t) { return t.path_error_rms; });
        }},
       {"estimator_position_rms", "m", [](const R& r) { return r.estimator.position_rms_all; }},
       {"estimator_attitude_rms_deg", "deg", [](const R& r) { return r.estimator.attitude_rms_deg_all; }},
@@ -55,8 +44,10 @@ const std::vector<Metric>& flightMetrics() {
   return metrics;
 }
 
-BatchContext BatchContext::load(const std::string& spec_path) {
-  BatchContext c{BatchSpec::load(spec_path), {}, {}, {}};
+BatchContext BatchContext::load(const std::string& spec_path) { return forSpec(BatchSpec::load(spec_path)); }
+
+BatchContext BatchContext::forSpec(BatchSpec spec) {
+  BatchContext c{std::move(spec), {}, {}, {}};
   c.scenario = mission::Scenario::load(c.spec.scenario_path);
   analysis::checkCriteriaKeys(c.scenario);
   c.config = closedloop::StackConfig::load(c.scenario.vehicle_path);
@@ -100,11 +91,13 @@ closedloop::StackConfig stackFlying(const BatchContext& context, const std::stri
   return config;
 }
 
-FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std::string& controller) {
+FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std::string& controller,
+                bool record_motor_commands) {
   const closedloop::StackConfig config = stackFlying(context, controller);
-  // MOTOR_CMD (1 kHz) is kept only for the criterion that judges it: rotors at the mixer's limits.
+  // MOTOR_CMD (1 kHz) is kept only when asked or for the criterion that judges it: rotors at the
+  // mixer's limits.
   closedloop::RecordOptions record;
-  record.motor_command = world.scenario.criteria.count("rotor_at_limit_max") > 0;
+  record.motor_command = record_motor_commands || world.scenario.criteria.count("rotor_at_limit_max") > 0;
   closedloop::ClosedLoop loop(config, world.plant, world.scenario, record);
   loop.run();
   FlownFlight flown{world, loop.log(), {}};

@@ -81,6 +81,8 @@ std::string batchInfoText(const BatchContext& context, const Shard& shard) {
   return text.str();
 }
 
+}  // namespace
+
 void writeText(const std::string& path, const std::string& text) {
   const std::string temporary = path + ".tmp";
   {
@@ -90,8 +92,6 @@ void writeText(const std::string& path, const std::string& text) {
   }
   if (std::rename(temporary.c_str(), path.c_str()) != 0) throw std::runtime_error(path + ": cannot replace");
 }
-
-}  // namespace
 
 Shard Shard::parse(const std::string& text) {
   Shard s;

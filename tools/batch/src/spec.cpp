@@ -53,23 +53,6 @@ std::string fnv1a(const std::string& text) {
   return out.str();
 }
 
-std::vector<double> numbers(const YAML::Node& node, const std::string& where) {
-  if (!node.IsSequence()) throw ConfigError(where, "expected a list of numbers");
-  std::vector<double> out;
-  for (size_t i = 0; i < node.size(); ++i) {
-    const std::string at = where + "[" + std::to_string(i) + "]";
-    double v = 0.0;
-    try {
-      v = node[i].as<double>();
-    } catch (const YAML::Exception&) {
-      throw ConfigError(at, "expected a number");
-    }
-    if (!std::isfinite(v)) throw ConfigError(at, "must be finite");
-    out.push_back(v);
-  }
-  return out;
-}
-
 void checkInRange(const PlantParameter& p, const Distribution& d, double value, const std::string& where) {
   if (d.relative) {
     if (!(value >= 0.0)) throw ConfigError(where, "a relative factor must be >= 0");
@@ -90,7 +73,7 @@ Distribution distribution(const PlantParameter& p, const YAML::Node& node, const
   int kinds = 0;
   if (node["uniform"]) {
     ++kinds;
-    const std::vector<double> v = numbers(node["uniform"], where + ".uniform");
+    const std::vector<double> v = numberList(node["uniform"], where + ".uniform");
     if (v.size() != 2) throw ConfigError(where + ".uniform", "expected [low, high]");
     if (!(v[0] <= v[1])) throw ConfigError(where + ".uniform[1]", "high must be >= low");
     d = {Distribution::Kind::kUniform, v[0], v[1], {}, d.relative};
@@ -99,7 +82,7 @@ Distribution distribution(const PlantParameter& p, const YAML::Node& node, const
   }
   if (node["normal"]) {
     ++kinds;
-    const std::vector<double> v = numbers(node["normal"], where + ".normal");
+    const std::vector<double> v = numberList(node["normal"], where + ".normal");
     if (v.size() != 2) throw ConfigError(where + ".normal", "expected [mean, std]");
     if (!(v[1] >= 0.0)) throw ConfigError(where + ".normal[1]", "the standard deviation must be >= 0");
     d = {Distribution::Kind::kNormal, v[0], v[1], {}, d.relative};
@@ -107,7 +90,7 @@ Distribution distribution(const PlantParameter& p, const YAML::Node& node, const
   }
   if (node["grid"]) {
     ++kinds;
-    const std::vector<double> v = numbers(node["grid"], where + ".grid");
+    const std::vector<double> v = numberList(node["grid"], where + ".grid");
     if (v.empty()) throw ConfigError(where + ".grid", "expected at least one value");
     d = {Distribution::Kind::kGrid, 0.0, 0.0, v, d.relative};
     for (size_t i = 0; i < v.size(); ++i) checkInRange(p, d, v[i], where + ".grid[" + std::to_string(i) + "]");
@@ -117,25 +100,6 @@ Distribution distribution(const PlantParameter& p, const YAML::Node& node, const
     throw ConfigError(where, "a list: name one element (" + p.key + "[0]) or scale every element (relative: true)");
   }
   return d;
-}
-
-std::vector<std::string> controllerList(const YAML::Node& node) {
-  const std::string where = "controllers";
-  if (!node.IsSequence() || node.size() == 0) throw ConfigError(where, "expected a list of controller names, e.g. [sdlqr]");
-  std::vector<std::string> out;
-  for (size_t i = 0; i < node.size(); ++i) {
-    const std::string at = where + "[" + std::to_string(i) + "]";
-    const std::string name = node[i].IsScalar() ? node[i].Scalar() : std::string();
-    const auto& known = knownControllers();
-    if (std::find(known.begin(), known.end(), name) == known.end()) {
-      std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-      throw ConfigError(at, "unknown controller '" + name + "' (known: " + list + ")");
-    }
-    if (std::find(out.begin(), out.end(), name) != out.end()) throw ConfigError(at, "'" + name + "' named twice");
-    out.push_back(name);
-  }
-  return out;
 }
 
 }  // namespace
@@ -170,6 +134,41 @@ const std::vector<std::string>& knownControllers() {
   return names;
 }
 
+std::vector<double> numberList(const YAML::Node& node, const std::string& where) {
+  if (!node.IsSequence()) throw ConfigError(where, "expected a list of numbers");
+  std::vector<double> out;
+  for (size_t i = 0; i < node.size(); ++i) {
+    const std::string at = where + "[" + std::to_string(i) + "]";
+    double v = 0.0;
+    try {
+      v = node[i].as<double>();
+    } catch (const YAML::Exception&) {
+      throw ConfigError(at, "expected a number");
+    }
+    if (!std::isfinite(v)) throw ConfigError(at, "must be finite");
+    out.push_back(v);
+  }
+  return out;
+}
+
+std::vector<std::string> controllerList(const YAML::Node& node, const std::string& where) {
+  if (!node.IsSequence() || node.size() == 0) throw ConfigError(where, "expected a list of controller names, e.g. [sdlqr]");
+  std::vector<std::string> out;
+  for (size_t i = 0; i < node.size(); ++i) {
+    const std::string at = where + "[" + std::to_string(i) + "]";
+    const std::string name = node[i].IsScalar() ? node[i].Scalar() : std::string();
+    const auto& known = knownControllers();
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw ConfigError(at, "unknown controller '" + name + "' (known: " + list + ")");
+    }
+    if (std::find(out.begin(), out.end(), name) != out.end()) throw ConfigError(at, "'" + name + "' named twice");
+    out.push_back(name);
+  }
+  return out;
+}
+
 std::string resolveScenario(const std::string& name, const std::string& spec_dir, const std::string& source_dir) {
   if (!name.empty() && name[0] == '/' && isFile(name)) return name;
   if (isFile(spec_dir + "/" + name)) return spec_dir + "/" + name;
@@ -200,7 +199,7 @@ BatchSpec BatchSpec::load(const std::string& path) {
   std::string scenario;
   reader.read("scenario", scenario);
   spec.scenario_path = resolveScenario(scenario, directoryOf(path), SDLQR_SOURCE_DIR);
-  if (root["controllers"]) spec.controllers = controllerList(root["controllers"]);
+  if (root["controllers"]) spec.controllers = controllerList(root["controllers"], "controllers");
 
   if (root["parameters"]) {
     const YAML::Node params = root["parameters"];

@@ -14,14 +14,10 @@
 
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/batch/draws.hpp"
+#include "sdlqr/batch/metric.hpp"
 
 namespace sdlqr::batch {
 
-struct Metric {
-  const char* name;
-  const char* unit;
-  double (*of)(const analysis::FlightReport&);
-};
 // The metrics every row carries besides the criteria (crash and non-finite messages are criteria
 // of every flight), declared once.
 const std::vector<Metric>& flightMetrics();
@@ -34,6 +30,8 @@ struct BatchContext {
   std::vector<std::string> criteria;  // the criterion keys judged in-process, in table order
 
   static BatchContext load(const std::string& spec_path);
+  // The context of a spec already read (or built by a caller that flies scenarios of its own).
+  static BatchContext forSpec(BatchSpec spec);
 };
 
 std::vector<std::string> header(const BatchContext& context);
@@ -46,8 +44,10 @@ struct FlownFlight {
 
 // The nominal stack with the controller process running `controller` (a law of lqr.law).
 closedloop::StackConfig stackFlying(const BatchContext& context, const std::string& controller);
-// Flies one world with one controller.
-FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std::string& controller);
+// Flies one world with one controller; MOTOR_CMD is recorded (and the rotor saturation counted)
+// when the scenario judges it or `record_motor_commands` asks for it.
+FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std::string& controller,
+                bool record_motor_commands = false);
 // The world of a draw (throws ConfigError "flight 17: vehicle.mass: ..." when it is no valid plant).
 FlightWorld worldOf(const BatchContext& context, const FlightDraw& draw);
 // The CSV row of a flown draw, '\n' included.

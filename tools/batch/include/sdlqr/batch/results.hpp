@@ -29,6 +29,8 @@ struct Shard {
 
 // mkdir -p; throws std::runtime_error naming the folder.
 void makeDirectories(const std::string& dir);
+// Writes a file atomically (a temporary file renamed over it); throws std::runtime_error naming it.
+void writeText(const std::string& path, const std::string& text);
 
 struct Table {
   std::vector<std::string> header;

@@ -47,6 +47,11 @@ const std::vector<KeyHelp>& distributionKeys();
 
 // The controllers a batch may name: the controller process's laws (lqr.law of a vehicle file).
 const std::vector<std::string>& knownControllers();
+// A YAML list of controller names, each known and named once; throws ConfigError naming
+// `where[i]` ("controllers[1]: unknown controller 'pid' (known: sdlqr, ...)").
+std::vector<std::string> controllerList(const YAML::Node& node, const std::string& where);
+// A YAML list of finite numbers; throws ConfigError naming `where` or `where[i]`.
+std::vector<double> numberList(const YAML::Node& node, const std::string& where);
 
 struct BatchSpec {
   std::string path;
