@@ -5,7 +5,10 @@
 # The bodyrate loop must reject them (reject.rate_cmd.unsigned counted in its HEARTBEAT) and the
 # hover must hold (sdlqr-faultcheck --hover). Negative: the same injection on an unsigned bus is
 # taken (no such rejection, the hover breaks), so the check can fail. Also: the launcher's key
-# file is mode 0600 and its key appears in no output.
+# file is mode 0600 and its key appears in no output; and the signed log (every message with its
+# trailer, as on the wire) is read by sdlqr-replay (every output of the cores recomputed bit for
+# bit; the only recorded-only messages are the rogue's), by LCM's Java decoder (as lcm-spy:
+# tests/java/DecodeCheck.java) and played by lcm-logplayer to a recorder that exports every channel.
 #   rogue_rate_cmd.sh BUILD_DIR WORK_DIR ROGUE
 set -uo pipefail
 build="$1" work="$2" rogue="$3"
@@ -49,6 +52,51 @@ if [ "$launch_status" -eq 0 ] && [ "$rogue_status" -eq 0 ] && [ "$check_status" 
   echo "ok   signed: the rogue's RATE_CMD were rejected as unsigned and the hover held"
 else
   echo "FAIL signed: launcher $launch_status, rogue $rogue_status, check $check_status"; ok=1
+fi
+
+# The signed log, read without the key.
+log="$work/signed/flight.lcmlog"
+sent="$(sed -n 's/^rogue: sent \([0-9]*\) .*/\1/p' "$work/signed/rogue.out")"
+"$build/bin/sdlqr-replay" "$log" --config "$root/config/quad255.yaml" --out "$work/signed/replay.lcmlog" \
+  >"$work/signed/replay.out" 2>&1
+# Each channel row: NAME recorded replayed compared identical max|diff| result...
+if awk 'NF >= 6 && $1 ~ /^(STATE_EST|RATE_CMD|REFERENCE|GAINS)$/ && $2 ~ /^[0-9]+$/ { rows++; if ($4 == 0 || $4 != $5) bad++ }
+        END { exit !(rows == 4 && bad == 0) }' "$work/signed/replay.out" &&
+   grep -q "^  RATE_CMD: $sent recorded only, 0 recomputed only" "$work/signed/replay.out"; then
+  echo "ok   sdlqr-replay of the signed log: every recomputed output identical, recorded only: the rogue's $sent RATE_CMD"
+else
+  echo "FAIL sdlqr-replay of the signed log:"; grep -E '^(channel|STATE_EST|RATE_CMD|REFERENCE|GAINS|  RATE_CMD)' "$work/signed/replay.out"; ok=1
+fi
+if command -v javac >/dev/null && [ -f "$build/lcmtypes_sdlqr.jar" ]; then
+  mkdir -p "$work/java"
+  if javac -nowarn -cp "/usr/share/java/lcm.jar:$build/lcmtypes_sdlqr.jar" -d "$work/java" "$root/tests/java/DecodeCheck.java" &&
+     java -cp "/usr/share/java/lcm.jar:$build/lcmtypes_sdlqr.jar:$work/java" DecodeCheck "$build/lcmtypes_sdlqr.jar" "$log" \
+       >"$work/java/decode.out" 2>&1; then
+    echo "ok   LCM's Java decoder (lcm-spy's) decodes every channel of the signed log: $(tail -1 "$work/java/decode.out")"
+  else
+    echo "FAIL LCM's Java decoder on the signed log:"; cat "$work/java/decode.out"; ok=1
+  fi
+elif [ "${CI:-}" = true ]; then
+  echo "FAIL no javac or lcmtypes_sdlqr.jar (CI=true: no silent skip)"; ok=1
+else
+  echo "skip LCM's Java decoder: no javac or lcmtypes_sdlqr.jar"
+fi
+"$build/bin/sdlqr-logger" record --out "$work/signed/played.lcmlog" --bus-layout single >/dev/null 2>&1 &
+recorder=$!
+sleep 0.5
+lcm-logplayer --speed 10 "$log" >/dev/null 2>&1
+sleep 0.3
+kill -TERM "$recorder"
+wait "$recorder"
+"$build/bin/sdlqr-logger" export "$work/signed/played.lcmlog" --out "$work/signed/played-csv" >/dev/null 2>&1
+missing=""
+for channel in IMU STATE_EST RATE_CMD GAINS REFERENCE MOTOR_CMD SIM_TRUTH HEARTBEAT; do
+  [ -s "$work/signed/played-csv/$channel.csv" ] || missing="$missing $channel"
+done
+if [ -z "$missing" ]; then
+  echo "ok   lcm-logplayer plays the signed log; an unsigned recorder's export has every channel"
+else
+  echo "FAIL lcm-logplayer of the signed log: the recorder's export lacks$missing"; ok=1
 fi
 
 fly unsigned --unsigned
