@@ -379,23 +379,29 @@ const Node::PublishChannel& Node::publishChannel(std::string_view base) {
   return publish_channels_.back();
 }
 
+lcm::LCM& Node::encodedChannelLcm(const std::string& channel) {
+  for (const auto& [known, lcm] : encoded_channels_) {
+    if (known == channel) return *lcm;
+  }
+  lcm::LCM& lcm = *endpointFor(channel).lcm;
+  if (encoded_channels_.size() < 256) encoded_channels_.emplace_back(channel, &lcm);  // a flood of names is not kept
+  return lcm;
+}
+
 void Node::publishEncoded(const std::string& channel, const void* data, int size) {
-  lcm::LCM* lcm = nullptr;
-  for (const auto& [known, known_lcm] : encoded_channels_) {
-    if (known == channel) lcm = known_lcm;
-  }
-  if (lcm == nullptr) {
-    lcm = endpointFor(channel).lcm.get();
-    if (encoded_channels_.size() < 256) encoded_channels_.emplace_back(channel, lcm);  // a flood of names is not kept
-  }
+  lcm::LCM& lcm = encodedChannelLcm(channel);
   if (signer_ == nullptr || size < 0) {
-    publishRaw(*lcm, channel, data, size);
+    publishRaw(lcm, channel, data, size);
     return;
   }
   const size_t room = static_cast<size_t>(size) + kSignatureSize;
   if (sign_buffer_.size() < room) sign_buffer_.resize(room);
   std::memcpy(sign_buffer_.data(), data, static_cast<size_t>(size));
-  publishFrame(*lcm, channel, sign_buffer_.data(), size);
+  publishFrame(lcm, channel, sign_buffer_.data(), size);
+}
+
+void Node::forwardEncoded(const std::string& channel, const void* data, int size) {
+  publishRaw(encodedChannelLcm(channel), channel, data, size);
 }
 
 void Node::publishFrame(lcm::LCM& lcm, const std::string& channel, uint8_t* buffer, int size) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -123,6 +124,32 @@ TEST(NodeSigning, ANodeWithoutTheKeyStillDecodesSignedMessages) {
   r.node.lcm().publish("QUAD/RATE_CMD", bytes.data(), static_cast<unsigned>(bytes.size()));
   handleAll(r.node);
   EXPECT_EQ(r.handled, (std::vector<int64_t>{3}));
+}
+
+TEST(NodeSigning, ABridgeForwardsBytesAsHeardAndSignsForNobody) {
+  Receiver r;
+  r.node.setBusKey(keyOf(1));
+  const rate_cmd_t plain = command(5);
+  std::vector<uint8_t> bytes(static_cast<size_t>(plain.getEncodedSize()));
+  plain.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  // A forwarded unsigned message stays unsigned (a bridge with the key launders nothing) ...
+  r.node.forwardEncoded("QUAD/RATE_CMD", bytes.data(), static_cast<int>(bytes.size()));
+  handleAll(r.node);
+  EXPECT_TRUE(r.handled.empty());
+  EXPECT_EQ(r.node.health().counter("reject.rate_cmd.unsigned"), 1);
+  // ... a forwarded signed one keeps its signature, and a tool's own encoded bytes are signed.
+  bytes.resize(bytes.size() + kSignatureSize);
+  BusSigner(keyOf(1)).sign("QUAD/RATE_CMD", bytes.data(), bytes.size() - kSignatureSize,
+                           {9, signatureTime(std::chrono::duration_cast<std::chrono::microseconds>(
+                                   std::chrono::system_clock::now().time_since_epoch()).count())});
+  r.node.forwardEncoded("QUAD/RATE_CMD", bytes.data(), static_cast<int>(bytes.size()));
+  const rate_cmd_t own = command(6);
+  std::vector<uint8_t> own_bytes(static_cast<size_t>(own.getEncodedSize()));
+  own.encode(own_bytes.data(), 0, static_cast<int>(own_bytes.size()));
+  r.node.publishEncoded("QUAD/RATE_CMD", own_bytes.data(), static_cast<int>(own_bytes.size()));
+  handleAll(r.node);
+  EXPECT_EQ(r.handled, (std::vector<int64_t>{5, 6}));
+  EXPECT_EQ(r.node.rejected(), 1);
 }
 
 TEST(NodeSigning, SigningAndCheckingAllocateNothingOnceRunning) {

@@ -103,7 +103,12 @@ class Node {
   void publish(std::string_view base, const T& msg);
   // Already encoded bytes on a full channel name (no prefix added), on that channel's URL: for
   // tools that forward or forge messages. Counted as published; a failure counts an error.
+  // On a signed bus the bytes are signed with this node's key, as publish() does.
   void publishEncoded(const std::string& channel, const void* data, int size);
+  // The same bytes on the channel's URL, never signed: for a bridge between ports, whose messages
+  // keep their publisher's signature (or its absence: a bridge with the key must not sign for
+  // whoever it hears). Counted as published.
+  void forwardEncoded(const std::string& channel, const void* data, int size);
 
   // Replaces the fault injection read from SDLQR_FAULTS at construction (tests over memq://).
   void setFaultInjection(const FaultInjection& faults);
@@ -223,6 +228,7 @@ class Node {
   Endpoint& endpointFor(std::string_view channel) { return endpoint(channelUrl(layout_, base_url_, channel)); }
   void markReceiving(Endpoint& e);
   void publishRaw(lcm::LCM& lcm, const std::string& channel, const void* data, int size);
+  lcm::LCM& encodedChannelLcm(const std::string& channel);
   // Publishes `size` bytes of `buffer`, signed first on a signed bus: the buffer has room for the
   // trailer (kSignatureSize more bytes).
   void publishFrame(lcm::LCM& lcm, const std::string& channel, uint8_t* buffer, int size);
