@@ -238,9 +238,13 @@ bool Node::drainInbox(Endpoint& e) {
         if (route.typed != nullptr) health_->counters().increment(route.typed->queue_drop);
         continue;
       }
+      // A message refused for its signature takes no place in the queue: a flood of unsigned ones
+      // cannot crowd out the signed message of the same batch.
+      uint32_t size = m.size;
+      if (route.typed != nullptr && !signatureAdmits(*route.typed, m.data, &size)) continue;
       ++e.delivered[static_cast<size_t>(r)];
       if (route.typed != nullptr) {
-        deliverTyped(*route.typed, m.data, m.size);
+        deliverTyped(*route.typed, m.data, size);
       } else {
         ++received_;
         route.raw->handler(routes.channel, m.data, m.size, m.receive_utime);
@@ -258,7 +262,9 @@ std::vector<std::string> Node::receiveUrls() const {
 
 void Node::dispatch(const lcm_recv_buf_t* rbuf, const char*, void* sub) {
   auto* subscription = static_cast<SubscriptionBase*>(sub);
-  subscription->node->deliverTyped(*subscription, rbuf->data, rbuf->data_size);
+  uint32_t size = rbuf->data_size;
+  if (!subscription->node->signatureAdmits(*subscription, rbuf->data, &size)) return;
+  subscription->node->deliverTyped(*subscription, rbuf->data, size);
 }
 
 void Node::setBusKey(const BusKey& key) {
@@ -279,20 +285,21 @@ uint64_t signatureNow() {
 
 }  // namespace
 
-RejectReason Node::admitSignature(SubscriptionBase& sub, const void* data, uint32_t size) {
+bool Node::signatureAdmits(SubscriptionBase& sub, const void* data, uint32_t* size) {
+  if (signer_ == nullptr) return true;
   const auto* bytes = static_cast<const uint8_t*>(data);
-  return admitSigned(*signer_, sub.replay, sub.channel, bytes, size, sub.fitsUnsigned(data, size), signatureNow());
+  const RejectReason reason =
+      admitSigned(*signer_, sub.replay, sub.channel, bytes, *size, sub.fitsUnsigned(data, *size), signatureNow());
+  if (reason != RejectReason::kNone) {
+    ++received_;
+    health_->reject(sub.stream, reason);
+    return false;
+  }
+  *size -= kSignatureSize;  // the handlers get the payload
+  return true;
 }
 
 void Node::deliverTyped(SubscriptionBase& sub, const void* data, uint32_t size) {
-  if (signer_ != nullptr) {
-    if (const RejectReason reason = admitSignature(sub, data, size); reason != RejectReason::kNone) {
-      ++received_;
-      health_->reject(sub.stream, reason);
-      return;
-    }
-    size -= kSignatureSize;  // the handlers get the payload
-  }
   if (faults_.enabled()) {
     injectFault(sub, data, size);
     return;

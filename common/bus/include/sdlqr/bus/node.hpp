@@ -232,8 +232,9 @@ class Node {
   // Publishes `size` bytes of `buffer`, signed first on a signed bus: the buffer has room for the
   // trailer (kSignatureSize more bytes).
   void publishFrame(lcm::LCM& lcm, const std::string& channel, uint8_t* buffer, int size);
-  // The signature check of a typed subscription's message on a signed bus.
-  RejectReason admitSignature(SubscriptionBase& sub, const void* data, uint32_t size);
+  // On a signed bus, the signature check of a typed subscription's message on arrival: false when
+  // refused (counted), else *size becomes the payload's. Always true on an unsigned bus.
+  bool signatureAdmits(SubscriptionBase& sub, const void* data, uint32_t* size);
   // Full channel name of a base name and its connection, found once: publishing then never allocates.
   struct PublishChannel {
     std::string base;
