@@ -1,6 +1,7 @@
 // sdlqr-bridge: forwards between the split bus layout and a single LCM URL, for tools that
 // listen or publish on one URL only (lcm-spy, lcm-logplayer). Each message is forwarded as is,
-// once; the bridge's own HEARTBEAT goes on the bus it listens to.
+// once, its signature too (signed bus: the channel keeps its name, so it still verifies; the
+// bridge never signs what it forwards); the bridge's own HEARTBEAT goes on the bus it listens to.
 
 #include <algorithm>
 #include <iostream>
@@ -67,7 +68,7 @@ int main(int argc, char** argv) {
       target_options.bus_layout = "single";
       bus::Node target("sdlqr-bridge", target_options);
       bus.subscribeRaw(".*", [&](const std::string& channel, const void* data, uint32_t size, int64_t) {
-        target.publishEncoded(channel, data, static_cast<int>(size));
+        target.forwardEncoded(channel, data, static_cast<int>(size));
       }, kQueueCapacity);
       std::cerr << "sdlqr-bridge: merging " << bus.receiveUrls().size() << " ports of " << base_url << " onto "
                 << other_url << "\n";
@@ -88,7 +89,7 @@ int main(int argc, char** argv) {
     bus::Node split_bus("sdlqr-bridge", split_options);
     listener.subscribeRaw(".*", [&](const std::string& channel, const void* data, uint32_t size, int64_t) {
       if (channel::splitPortOffset(channel::baseName(channel)) == 0) return;
-      split_bus.publishEncoded(channel, data, static_cast<int>(size));
+      split_bus.forwardEncoded(channel, data, static_cast<int>(size));
     }, kQueueCapacity);
     std::cerr << "sdlqr-bridge: splitting the high-rate channels heard on " << base_url << " onto their ports\n";
     listener.setState(bus::ProcessState::kRunning);

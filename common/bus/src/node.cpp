@@ -2,6 +2,7 @@
 
 #include <poll.h>
 #include <regex.h>
+#include <sys/random.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -117,12 +118,13 @@ Node::Node(std::string process, const ProcessOptions& options, ProcessHealth& he
   if (const char* spec = std::getenv("SDLQR_FAULTS"); spec != nullptr && spec[0] != '\0') {
     setFaultInjection(FaultInjection::parse(spec));
   }
+  if (const std::optional<BusKey> key = busKeyFromEnvironment()) setBusKey(*key);
   struct sigaction action {};
   action.sa_handler = onStopSignal;
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
-  encode_buffer_.resize(4096);
+  encode_buffer_.resize(4096 + kSignatureSize);
   next_heartbeat_ = std::chrono::steady_clock::now();
   cpu_window_start_ = next_heartbeat_;
   cpu_seconds_at_window_start_ = processCpuSeconds();
@@ -236,9 +238,13 @@ bool Node::drainInbox(Endpoint& e) {
         if (route.typed != nullptr) health_->counters().increment(route.typed->queue_drop);
         continue;
       }
+      // A message refused for its signature takes no place in the queue: a flood of unsigned ones
+      // cannot crowd out the signed message of the same batch.
+      uint32_t size = m.size;
+      if (route.typed != nullptr && !signatureAdmits(*route.typed, m.data, &size)) continue;
       ++e.delivered[static_cast<size_t>(r)];
       if (route.typed != nullptr) {
-        deliverTyped(*route.typed, m.data, m.size);
+        deliverTyped(*route.typed, m.data, size);
       } else {
         ++received_;
         route.raw->handler(routes.channel, m.data, m.size, m.receive_utime);
@@ -256,7 +262,41 @@ std::vector<std::string> Node::receiveUrls() const {
 
 void Node::dispatch(const lcm_recv_buf_t* rbuf, const char*, void* sub) {
   auto* subscription = static_cast<SubscriptionBase*>(sub);
-  subscription->node->deliverTyped(*subscription, rbuf->data, rbuf->data_size);
+  uint32_t size = rbuf->data_size;
+  if (!subscription->node->signatureAdmits(*subscription, rbuf->data, &size)) return;
+  subscription->node->deliverTyped(*subscription, rbuf->data, size);
+}
+
+void Node::setBusKey(const BusKey& key) {
+  signer_ = std::make_unique<BusSigner>(key);
+  // A new link per node: a restarted process starts a fresh timestamp sequence.
+  if (getrandom(&link_id_, sizeof link_id_, 0) != static_cast<ssize_t>(sizeof link_id_)) {
+    throw std::runtime_error("cannot draw a signing link id (getrandom)");
+  }
+  if (sign_buffer_.size() < 4096) sign_buffer_.resize(4096);
+}
+
+namespace {
+
+uint64_t signatureNow() {
+  const auto since_epoch = std::chrono::system_clock::now().time_since_epoch();
+  return signatureTime(std::chrono::duration_cast<std::chrono::microseconds>(since_epoch).count());
+}
+
+}  // namespace
+
+bool Node::signatureAdmits(SubscriptionBase& sub, const void* data, uint32_t* size) {
+  if (signer_ == nullptr) return true;
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  const RejectReason reason =
+      admitSigned(*signer_, sub.replay, sub.channel, bytes, *size, sub.fitsUnsigned(data, *size), signatureNow());
+  if (reason != RejectReason::kNone) {
+    ++received_;
+    health_->reject(sub.stream, reason);
+    return false;
+  }
+  *size -= kSignatureSize;  // the handlers get the payload
+  return true;
 }
 
 void Node::deliverTyped(SubscriptionBase& sub, const void* data, uint32_t size) {
@@ -346,16 +386,40 @@ const Node::PublishChannel& Node::publishChannel(std::string_view base) {
   return publish_channels_.back();
 }
 
-void Node::publishEncoded(const std::string& channel, const void* data, int size) {
+lcm::LCM& Node::encodedChannelLcm(const std::string& channel) {
   for (const auto& [known, lcm] : encoded_channels_) {
-    if (known == channel) {
-      publishRaw(*lcm, channel, data, size);
-      return;
-    }
+    if (known == channel) return *lcm;
   }
   lcm::LCM& lcm = *endpointFor(channel).lcm;
   if (encoded_channels_.size() < 256) encoded_channels_.emplace_back(channel, &lcm);  // a flood of names is not kept
-  publishRaw(lcm, channel, data, size);
+  return lcm;
+}
+
+void Node::publishEncoded(const std::string& channel, const void* data, int size) {
+  lcm::LCM& lcm = encodedChannelLcm(channel);
+  if (signer_ == nullptr || size < 0) {
+    publishRaw(lcm, channel, data, size);
+    return;
+  }
+  const size_t room = static_cast<size_t>(size) + kSignatureSize;
+  if (sign_buffer_.size() < room) sign_buffer_.resize(room);
+  std::memcpy(sign_buffer_.data(), data, static_cast<size_t>(size));
+  publishFrame(lcm, channel, sign_buffer_.data(), size);
+}
+
+void Node::forwardEncoded(const std::string& channel, const void* data, int size) {
+  publishRaw(encodedChannelLcm(channel), channel, data, size);
+}
+
+void Node::publishFrame(lcm::LCM& lcm, const std::string& channel, uint8_t* buffer, int size) {
+  if (signer_ == nullptr) {
+    publishRaw(lcm, channel, buffer, size);
+    return;
+  }
+  // Strictly increasing per link, even for messages sent within one 10 us tick.
+  last_signature_time_ = std::max(signatureNow(), last_signature_time_ + 1);
+  signer_->sign(channel, buffer, static_cast<size_t>(size), SignatureTrailer{link_id_, last_signature_time_});
+  publishRaw(lcm, channel, buffer, size + static_cast<int>(kSignatureSize));
 }
 
 void Node::dispatchRaw(const lcm::ReceiveBuffer* rbuf, const std::string& channel, RawSubscription* sub) {
@@ -389,6 +453,7 @@ void Node::subscribeRaw(const std::string& pattern, RawHandler handler, int queu
 
 void Node::addSubscription(std::string_view base, std::unique_ptr<SubscriptionBase> sub, int queue_capacity) {
   sub->node = this;
+  sub->channel = this->channel(base);
   sub->lost = health_->counters().add("lost." + std::string(base));
   sub->queue_drop = health_->counters().add("queue_drop." + std::string(base));
   const std::string channel = this->channel(base);

@@ -29,6 +29,10 @@ constexpr ReasonNames kNames[] = {
     {"queue_full", "reject.queue_full"},
     {"unstable", "reject.unstable"},
     {"refused", "reject.refused"},
+    {"unsigned", "reject.unsigned"},
+    {"bad_mac", "reject.bad_mac"},
+    {"replayed", "reject.replayed"},
+    {"sig_window", "reject.sig_window"},
 };
 static_assert(sizeof(kNames) / sizeof(kNames[0]) == kRejectReasonCount, "one name per reason");
 

@@ -104,7 +104,7 @@ const Host* Deployment::hostOf(const std::string& process) const {
 Deployment loadDeployment(const std::string& path, const std::vector<std::string>& stack_processes) {
   const YAML::Node root = loadYamlFile(path);
   ConfigReader reader(root, "");
-  reader.allowOnly({"name", "description", "lcm_url", "prefix_length", "monitor", "hosts"});
+  reader.allowOnly({"name", "description", "lcm_url", "prefix_length", "monitor", "signing", "hosts"});
   Deployment d;
   reader.read("name", d.name);
   if (d.name.empty()) throw ConfigError("name", "missing");
@@ -124,6 +124,8 @@ Deployment loadDeployment(const std::string& path, const std::vector<std::string
   if (std::none_of(d.hosts.begin(), d.hosts.end(), [&](const Host& h) { return h.name == d.monitor; })) {
     throw ConfigError("monitor", "no host '" + d.monitor + "'");
   }
+  d.signing = d.hosts.size() > 1;
+  reader.read("signing", d.signing);
   checkAddresses(d);
   checkProcesses(d, stack_processes);
   return d;
@@ -145,7 +147,7 @@ std::vector<std::string> stackProcessNames(const std::string& procs_path) {
 std::string describe(const Deployment& d) {
   std::ostringstream out;
   out << "name=" << d.name << "\nlcm_url=" << d.lcm_url << "\nprefix_length=" << d.prefix_length
-      << "\nmonitor=" << d.monitor << "\n";
+      << "\nmonitor=" << d.monitor << "\nsigning=" << (d.signing ? "on" : "off") << "\n";
   for (const Host& host : d.hosts) {
     out << "host=" << host.name << " " << host.address << " " << host.receive_delay_ms;
     for (const std::string& p : host.processes) out << " " << p;

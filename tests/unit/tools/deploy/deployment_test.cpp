@@ -60,17 +60,27 @@ TEST(Deployment, ShippedFilesPlaceEveryProcessOnce) {
   EXPECT_EQ(three.hostOf("controller")->name, "companion");
   EXPECT_EQ(three.hostOf("logger")->name, "ground");
   EXPECT_EQ(three.monitor, "ground");
+  EXPECT_TRUE(three.signing);
   const Deployment one = loadDeployment(std::string(SDLQR_SOURCE_DIR) + "/config/deploy/one_host.yaml", names);
   ASSERT_EQ(one.hosts.size(), 1u);
+  EXPECT_FALSE(one.signing);
   for (const std::string& p : names) EXPECT_EQ(one.hostOf(p)->name, "host") << p;
 }
 
 TEST(Deployment, DescribesEveryHostOnOneLine) {
   const Deployment d = loadDeployment(writeTemp(kValid), stackProcessNames(kStackTable));
   EXPECT_EQ(describe(d),
-            "name=two\nlcm_url=udpm://239.255.76.67:7667?ttl=1\nprefix_length=24\nmonitor=air\n"
+            "name=two\nlcm_url=udpm://239.255.76.67:7667?ttl=1\nprefix_length=24\nmonitor=air\nsigning=on\n"
             "host=air 10.77.0.2 0 sim lowlevel estimator gains controller\n"
             "host=ground 10.77.0.3 20 mission logger\n");
+}
+
+TEST(Deployment, SigningIsOnAcrossHostsByDefaultAndSetByItsKey) {
+  EXPECT_TRUE(loadDeployment(writeTemp(kValid), stackProcessNames(kStackTable)).signing);
+  const std::string off = replaced(kValid, "hosts:\n", "signing: false\nhosts:\n");
+  EXPECT_FALSE(loadDeployment(writeTemp(off), stackProcessNames(kStackTable)).signing);
+  EXPECT_NE(errorOf(replaced(kValid, "hosts:\n", "signing: maybe\nhosts:\n")).find("signing: expected true or false"),
+            std::string::npos);
 }
 
 TEST(Deployment, RefusesEachMistakeNamingItsKey) {

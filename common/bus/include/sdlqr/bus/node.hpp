@@ -13,6 +13,12 @@
 // It publishes with LCM; on udpm:// it reads its sockets itself, in the calling thread
 // (src/udpm_inbox.hpp says why), every datagram ready at once; a subscription of queue
 // capacity N gets the first N of its channel's messages waiting, later ones are dropped (as LCM).
+// Signed bus (signature.hpp): with a key (SDLQR_BUS_KEY, or setBusKey()) the node signs every
+// message it publishes and admits on its typed subscriptions only messages signed with that key,
+// newer than the last from their link and inside the replay window; the others are rejected
+// (kUnsigned, kBadMac, kReplayed, kSignatureWindow, counted per stream like any rejection) on
+// arrival, before the size walk, the decode, any fault injection or handler. Raw (recorder)
+// subscriptions get the bytes as sent, trailer included: a log holds what was on the wire.
 
 #include <lcm/lcm-cpp.hpp>
 
@@ -25,8 +31,10 @@
 #include <string_view>
 #include <vector>
 
+#include "sdlqr/bus/bus_key.hpp"
 #include "sdlqr/bus/bus_layout.hpp"
 #include "sdlqr/bus/decode.hpp"
+#include "sdlqr/bus/signature.hpp"
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/health/process_health.hpp"
 #include "sdlqr/messages/channels.hpp"
@@ -95,11 +103,19 @@ class Node {
   void publish(std::string_view base, const T& msg);
   // Already encoded bytes on a full channel name (no prefix added), on that channel's URL: for
   // tools that forward or forge messages. Counted as published; a failure counts an error.
+  // On a signed bus the bytes are signed with this node's key, as publish() does.
   void publishEncoded(const std::string& channel, const void* data, int size);
+  // The same bytes on the channel's URL, never signed: for a bridge between ports, whose messages
+  // keep their publisher's signature (or its absence: a bridge with the key must not sign for
+  // whoever it hears). Counted as published.
+  void forwardEncoded(const std::string& channel, const void* data, int size);
 
   // Replaces the fault injection read from SDLQR_FAULTS at construction (tests over memq://).
   void setFaultInjection(const FaultInjection& faults);
   const FaultInjection& faultInjection() const { return faults_; }
+  // Signs and checks from now on with `key` (replaces SDLQR_BUS_KEY's; tests over memq://).
+  void setBusKey(const BusKey& key);
+  bool signing() const { return signer_ != nullptr; }
 
   // Handles messages for up to timeout_ms and publishes HEARTBEAT when one is due.
   // Returns false once SIGINT or SIGTERM has been received.
@@ -137,7 +153,11 @@ class Node {
   struct SubscriptionBase {
     virtual ~SubscriptionBase() = default;
     virtual void onMessage(const void* data, uint32_t size) = 0;
+    // The bytes are one whole encoding of the channel's type (tells kUnsigned from kBadMac).
+    virtual bool fitsUnsigned(const void* data, uint32_t size) const = 0;
     Node* node = nullptr;
+    std::string channel;  // full name: signed with the payload
+    ReplayWindow replay;  // signed bus: the newest timestamp of each link on this channel
     Stream stream = Stream::kOther;
     int64_t last_seq = -1;
     Counters::Id lost = -1;        // "lost.<base>": forward seq gaps
@@ -160,6 +180,9 @@ class Node {
       const auto start = std::chrono::steady_clock::now();
       handler(message);
       if (std::chrono::steady_clock::now() - start > budget) node->countDeadlineMiss();
+    }
+    bool fitsUnsigned(const void* data, uint32_t size) const override {
+      return encodingFits<T>(static_cast<const uint8_t*>(data), size);
     }
   };
   struct RawSubscription {
@@ -205,6 +228,13 @@ class Node {
   Endpoint& endpointFor(std::string_view channel) { return endpoint(channelUrl(layout_, base_url_, channel)); }
   void markReceiving(Endpoint& e);
   void publishRaw(lcm::LCM& lcm, const std::string& channel, const void* data, int size);
+  lcm::LCM& encodedChannelLcm(const std::string& channel);
+  // Publishes `size` bytes of `buffer`, signed first on a signed bus: the buffer has room for the
+  // trailer (kSignatureSize more bytes).
+  void publishFrame(lcm::LCM& lcm, const std::string& channel, uint8_t* buffer, int size);
+  // On a signed bus, the signature check of a typed subscription's message on arrival: false when
+  // refused (counted), else *size becomes the payload's. Always true on an unsigned bus.
+  bool signatureAdmits(SubscriptionBase& sub, const void* data, uint32_t* size);
   // Full channel name of a base name and its connection, found once: publishing then never allocates.
   struct PublishChannel {
     std::string base;
@@ -227,7 +257,11 @@ class Node {
   std::vector<std::unique_ptr<Endpoint>> endpoints_;  // [0]: the base URL
   std::vector<std::unique_ptr<SubscriptionBase>> subscriptions_;
   std::vector<std::unique_ptr<RawSubscription>> raw_subscriptions_;
-  std::vector<uint8_t> encode_buffer_;
+  std::vector<uint8_t> encode_buffer_;  // kSignatureSize spare bytes past any encoding
+  std::unique_ptr<BusSigner> signer_;   // null: an unsigned bus
+  uint32_t link_id_ = 0;
+  uint64_t last_signature_time_ = 0;
+  std::vector<uint8_t> sign_buffer_;    // publishEncoded's copy, with room for the trailer
   std::vector<PublishChannel> publish_channels_;
   std::vector<std::pair<std::string, lcm::LCM*>> encoded_channels_;  // publishEncoded's, found once
   std::vector<Endpoint*> receiving_;  // the endpoints handleReady polls
@@ -269,14 +303,15 @@ void Node::subscribe(std::string_view base, std::function<void(const T&)> handle
 template <class T>
 void Node::publish(std::string_view base, const T& msg) {
   const int size = msg.getEncodedSize();
-  if (static_cast<int>(encode_buffer_.size()) < size) encode_buffer_.resize(static_cast<size_t>(size));
+  const size_t room = static_cast<size_t>(size) + kSignatureSize;
+  if (encode_buffer_.size() < room) encode_buffer_.resize(room);
   if (msg.encode(encode_buffer_.data(), 0, size) < 0) {
     countError();
     setLastError("encode failed on " + std::string(base));
     return;
   }
   const PublishChannel& target = publishChannel(base);
-  publishRaw(*target.lcm, target.full, encode_buffer_.data(), size);
+  publishFrame(*target.lcm, target.full, encode_buffer_.data(), size);
 }
 
 }  // namespace sdlqr::bus

@@ -26,6 +26,11 @@ enum class RejectReason : int8_t {
   kQueueFull,       // no room to keep it (a bounded schedule is full)
   kUnstable,        // a gain whose closed loop the receiver's own check finds not Schur stable
   kRefused,         // valid on its own, refused by the algorithm in its current state
+  // A signed bus (common/bus signature.hpp), checked before any of the above:
+  kUnsigned,        // no signature trailer where the bus requires one
+  kBadMac,          // a trailer whose MAC is not the key's over these bytes (forged or corrupted)
+  kReplayed,        // its link's timestamp not after the newest accepted from that link on the channel
+  kSignatureWindow, // its timestamp further from the receiver's clock than the replay window
   kCount
 };
 inline constexpr int kRejectReasonCount = static_cast<int>(RejectReason::kCount);

@@ -1,7 +1,8 @@
 #pragma once
 // A deployment file (config/deploy/*.yaml): which emulated host runs which process of the stack
 // table (config/stack.procs), each host's address on the private segment, the LCM URL every
-// process uses across hosts, and an optional delay on what one host receives. scripts/deploy
+// process uses across hosts, whether the bus is signed, and an optional delay on what one host
+// receives. scripts/deploy
 // builds the hosts from the description this prints; parsing and validation live here only.
 
 #include <string>
@@ -21,6 +22,8 @@ struct Deployment {
   std::string lcm_url;     // udpm with ttl >= 1 as soon as there is more than one host
   int prefix_length = 24;  // of the segment the host addresses share
   std::string monitor;     // host of the launcher's own bus tools (calibration, heartbeat wait)
+  // A signed bus (README, Signed bus): key `signing`, by default on across hosts, off on one.
+  bool signing = true;
   std::vector<Host> hosts;
 
   const Host* hostOf(const std::string& process) const;
