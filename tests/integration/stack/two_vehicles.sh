@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Two stacks under different --vehicle prefixes fly at once on one bus (the caller provides a
-# private network namespace). Each must fly its own scenario — different setpoints, seeds and
-# heights — to its own criteria; crosstalk would drag one towards the other's setpoints and show
-# as rejected (out-of-order) messages in the heartbeats.
+# private network namespace), recorded by one ground logger with no prefix (every channel of both).
+# Each must fly its own scenario — different setpoints, seeds and heights — to its own criteria,
+# judged from the ground log alone; crosstalk would drag one towards the other's setpoints and show
+# as rejected (out-of-order) messages in the heartbeats. sdlqr-top, listening mid-flight, must show
+# every process of both vehicles and the ground logger alive.
 #   two_vehicles.sh BUILD_DIR WORK_DIR
 set -uo pipefail
 build="$1" work="$2"
@@ -11,14 +13,33 @@ root="$(cd "$here/../../.." && pwd)"
 rm -rf "$work"
 mkdir -p "$work"
 
-"$root/scripts/launch" --build "$build" --vehicle QUAD1 --log "$work/quad1.lcmlog" "$here/two_vehicles_quad1.yaml" \
-  > "$work/quad1.out" 2>&1 &
+# Every process of both vehicles and the ground logger alive in sdlqr-top's last report (TOP_FILE).
+top_shows_everyone() {  # TOP_FILE
+  local missing=0 name
+  for name in sdlqr-logger QUAD{1,2}/sdlqr-{estimator,gains,controller,lowlevel,mission,sim}; do
+    tac "$1" | awk '/^PROCESS/ {exit} {print}' | grep -qE "^$name +alive" || { echo "sdlqr-top: $name not alive"; missing=1; }
+  done
+  return "$missing"
+}
+# The check fails on a report without one vehicle (its negative).
+printf 'PROCESS HEALTH\nsdlqr-logger alive\nQUAD1/sdlqr-sim alive\n' > "$work/top_negative.txt"
+if top_shows_everyone "$work/top_negative.txt" >/dev/null; then echo "FAIL: the sdlqr-top check passed a report without QUAD2"; exit 1; fi
+
+"$build/bin/sdlqr-logger" record --out "$work/ground.lcmlog" > "$work/ground.out" 2>&1 &
+logger=$!
+"$build/bin/sdlqr-top" --wait-for sdlqr-logger --timeout 10 >/dev/null || { echo "ground logger never beat"; exit 1; }
+"$root/scripts/launch" --build "$build" --vehicle QUAD1 --without logger --log "$work/quad1/flight.lcmlog" \
+  "$here/two_vehicles_quad1.yaml" > "$work/quad1.out" 2>&1 &
 pid1=$!
-"$root/scripts/launch" --build "$build" --vehicle QUAD2 --log "$work/quad2.lcmlog" "$here/two_vehicles_quad2.yaml" \
-  > "$work/quad2.out" 2>&1 &
+"$root/scripts/launch" --build "$build" --vehicle QUAD2 --without logger --log "$work/quad2/flight.lcmlog" \
+  "$here/two_vehicles_quad2.yaml" > "$work/quad2.out" 2>&1 &
 pid2=$!
+# Once both simulators beat (each launcher starts its simulator last), sdlqr-top listens a while.
+for v in 1 2; do "$build/bin/sdlqr-top" --vehicle "QUAD$v" --wait-for sdlqr-sim --timeout 60 >/dev/null || true; done
+"$build/bin/sdlqr-top" --plain --duration 3.5 > "$work/top.txt" 2>&1
 wait "$pid1"; status1=$?
 wait "$pid2"; status2=$?
+kill -TERM "$logger"; wait "$logger"
 echo "two_vehicles: launcher exit codes QUAD1 $status1, QUAD2 $status2"
 if [ "$status1" -ne 0 ] || [ "$status2" -ne 0 ]; then
   tail -20 "$work/quad1.out" "$work/quad2.out"
@@ -28,7 +49,7 @@ fi
 result=0
 for v in 1 2; do
   echo "== QUAD$v"
-  "$build/bin/sdlqr-analyze" "$work/quad$v.lcmlog" --vehicle "QUAD$v" \
+  "$build/bin/sdlqr-analyze" "$work/ground.lcmlog" --vehicle "QUAD$v" \
     --scenario "$here/two_vehicles_quad$v.yaml" --json "$work/quad$v.json" || result=1
   # No process of this vehicle may have rejected a message: another vehicle's messages on its
   # channels would be rejected as out of order or counted as sequence gaps.
@@ -39,4 +60,6 @@ print(sum(p['rejected'] for p in r['processes']))")
   echo "QUAD$v: messages rejected by its processes: $rejected"
   [ "$rejected" -eq 0 ] || result=1
 done
+echo "== sdlqr-top mid-flight"
+top_shows_everyone "$work/top.txt" || { tail -20 "$work/top.txt"; result=1; }
 exit "$result"

@@ -219,14 +219,19 @@ void Recomputation::feedNamedGains(int64_t gains_seq) {
 // True when the recorded tick shows the controller cannot have received `estimate` (a tick is
 // computed from the last estimate before a grid point, carried forward, or on the first one at
 // or after it):
-//  - feeding it would tick earlier in the same grid slot than the recording did, or
+//  - feeding it would tick earlier in the same grid slot than the recording did,
+//  - feeding it would tick in a slot the recording has no tick in, while the controller was
+//    ticking (a tick recorded before): it missed every estimate of that slot, or
 //  - the recorded tick is carried forward from the next estimate over a longer interval than
 //    the one from this estimate: the controller's previous estimate was older than this one.
 bool Recomputation::missedByController(const StateEstimate& estimate, const RateCommand& recorded) const {
   const int64_t tick_utime = controller_.lqr().tickUtimeFor(estimate);
   if (tick_utime >= 0) {
     const int64_t next_grid = (tick_utime / tick_period_us_ + 1) * tick_period_us_;
-    return recorded.utime > tick_utime && recorded.utime < next_grid && recorded.state_seq > estimate.seq;
+    const bool ticking = next_tick_ > 0;
+    const bool later_in_slot = recorded.utime > tick_utime && recorded.utime < next_grid;
+    const bool slot_skipped = ticking && recorded.utime >= next_grid;
+    return (later_in_slot || slot_skipped) && recorded.state_seq > estimate.seq;
   }
   if (recorded.state_seq != estimate.seq + 1) return false;
   const auto next = recorded_estimate_.find(estimate.seq + 1);
