@@ -118,5 +118,29 @@ TEST(OutputComparison, MessagesRecomputedAfterTheRecordingEndedAreNotDifferences
   EXPECT_FALSE(without.bitForBit());
 }
 
+// A foreign publisher's RATE_CMD in the recording (a rogue's, seq 1000000) is recorded only and
+// does not move the recording's end: the replay's tick past the controller's last recorded one is
+// still after the recording, and a tick missing in the middle is still a difference.
+TEST(OutputComparison, AForeignRecordedMessageDoesNotMoveTheRecordingsEnd) {
+  RecordedFlight f = recording();
+  ReplayOutputs o = outputsOf(f);
+  RateCommand rogue = f.rate_command.back();
+  rogue.seq = 1000000;
+  f.rate_command.push_back(rogue);
+  RateCommand extra = o.rate_command.back();
+  extra.seq = 5;
+  o.rate_command.push_back(extra);
+  const ChannelComparison& rate = compareOutputs(f, o, 0.0).channels[1];
+  ASSERT_EQ(rate.channel, "RATE_CMD");
+  EXPECT_EQ(rate.only_recorded, 1);
+  EXPECT_EQ(rate.after_recording, 1);
+  EXPECT_EQ(rate.only_replayed, 0);
+
+  f.rate_command.erase(f.rate_command.begin() + 2);  // seq 2: recomputed, not in the recording
+  const ChannelComparison& gap = compareOutputs(f, o, 0.0).channels[1];
+  EXPECT_EQ(gap.only_replayed, 1);
+  EXPECT_EQ(gap.after_recording, 1);
+}
+
 }  // namespace
 }  // namespace sdlqr::replay

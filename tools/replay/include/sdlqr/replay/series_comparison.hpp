@@ -143,6 +143,10 @@ ChannelComparison compareSeries(const char* channel, const std::vector<T>& recor
   std::map<int64_t, const T*> by_seq;
   for (const T& m : replayed) by_seq.emplace(m.seq, &m);
   std::map<std::string, FieldDifference> fields;
+  // The recording ends at its last message the replay also computed: a foreign publisher's
+  // messages (recorded only, any seq: a rogue's RATE_CMD from seq 1000000) do not move that end.
+  int64_t last_matched = -1;
+  bool any_matched = false;
   for (const T& r : recorded) {
     auto it = by_seq.find(r.seq);
     if (it == by_seq.end()) {
@@ -155,15 +159,14 @@ ChannelComparison compareSeries(const char* channel, const std::vector<T>& recor
     detail::FieldWalker walker(out, fields, tolerance, r.seq);
     lcmtypes::visitLeaves(walker, r, *it->second);
     ++out.compared;
+    last_matched = any_matched ? std::max(last_matched, r.seq) : r.seq;
+    any_matched = true;
     if (walker.identical()) ++out.identical;
     if (walker.withinTolerance()) ++out.within_tolerance;
     by_seq.erase(it);
   }
-  if (!recorded.empty()) {
-    const int64_t last_recorded = std::max_element(recorded.begin(), recorded.end(), [](const T& a, const T& b) {
-                                    return a.seq < b.seq;
-                                  })->seq;
-    for (auto it = by_seq.upper_bound(last_recorded); it != by_seq.end();) {
+  if (any_matched) {
+    for (auto it = by_seq.upper_bound(last_matched); it != by_seq.end();) {
       ++out.after_recording;
       it = by_seq.erase(it);
     }
