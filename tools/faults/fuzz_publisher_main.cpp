@@ -11,6 +11,7 @@
 
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/faults/fuzz_messages.hpp"
+#include "sdlqr/faults/replay_source.hpp"
 #include "sdlqr/logger/channel_types.hpp"
 #include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
 #include "sdlqr/bus/node.hpp"
@@ -20,11 +21,11 @@ using namespace sdlqr;
 namespace {
 
 struct Target {
+  explicit Target(double replay_age_s) : replay(replay_age_s) {}
   std::string channel;
   const lcmtypes::TypeDescriptor* type = nullptr;
   std::vector<uint8_t> latest;  // newest valid encoding heard (or a default one)
-  std::vector<uint8_t> old;     // one heard at least replay_age ago
-  double old_taken_s = -1.0;
+  faults::ReplaySource replay;  // one heard replay_age to twice that ago
 };
 
 std::vector<uint8_t> defaultEncoding(std::string_view lcm_type) {
@@ -68,7 +69,7 @@ int main(int argc, char** argv) {
     std::vector<Target> targets;
     for (const logger::ChannelType& channel : logger::channelTypes()) {
       if (("," + skip_text + ",").find("," + std::string(channel.base) + ",") != std::string::npos) continue;
-      Target target;
+      Target target(replay_age);
       target.channel = bus.channel(channel.base);
       target.type = lcmtypes::findType(channel.lcm_type);
       target.latest = defaultEncoding(channel.lcm_type);
@@ -84,15 +85,11 @@ int main(int argc, char** argv) {
     auto seconds = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
     for (size_t i = 0; i < targets.size(); ++i) {
       Target* target = &targets[i];
-      bus.subscribeRaw("^" + target->channel + "$", [target, &seconds, replay_age](const std::string&, const void* data,
-                                                                               uint32_t size, int64_t) {
+      bus.subscribeRaw("^" + target->channel + "$", [target, &seconds](const std::string&, const void* data,
+                                                                   uint32_t size, int64_t) {
         const auto* bytes = static_cast<const uint8_t*>(data);
         target->latest.assign(bytes, bytes + size);
-        const double now = seconds();
-        if (target->old_taken_s < 0.0 || now - target->old_taken_s >= replay_age) {
-          target->old = target->latest;
-          target->old_taken_s = now;
-        }
+        target->replay.heard(bytes, size, seconds());
       }, 64);
     }
 
@@ -107,10 +104,13 @@ int main(int argc, char** argv) {
       for (size_t i = 0; i < targets.size(); ++i) {
         Target& target = targets[i];
         const auto kind = static_cast<faults::FuzzKind>((round + static_cast<int64_t>(i)) % faults::kFuzzKindCount);
-        const bool replay = kind == faults::FuzzKind::kReplayed;
-        // A replay needs a message at least replay_age old; until then nothing is sent for it.
-        if (replay && (target.old.empty() || seconds() - target.old_taken_s < replay_age)) continue;
-        if (!generator.make(kind, *target.type, replay ? target.old : target.latest, out)) continue;
+        const std::vector<uint8_t>* source = &target.latest;
+        if (kind == faults::FuzzKind::kReplayed) {
+          // A replay needs a message at least replay_age old; until then nothing is sent for it.
+          source = target.replay.replayable(seconds());
+          if (source == nullptr) continue;
+        }
+        if (!generator.make(kind, *target.type, *source, out)) continue;
         bus.publishEncoded(target.channel, out.data(), static_cast<int>(out.size()));
         bus.counters().increment(sent_ids[static_cast<int>(kind)]);
       }

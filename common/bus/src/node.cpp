@@ -111,6 +111,7 @@ Node::Node(std::string process, const ProcessOptions& options, ProcessHealth& he
     bus_malformed_ = health_->counters().add("bus.malformed");
     bus_over_capacity_ = health_->counters().add("bus.over_capacity");  // queue full: dropped on arrival
     bus_unrouted_ = health_->counters().add("bus.unrouted");      // no subscription of this process wants it
+    bus_kernel_dropped_ = health_->counters().add("bus.kernel_dropped");  // socket buffer full: lost unread
   }
   if (const std::string refused = lockMemoryWhenAsked(); !refused.empty()) {
     std::fprintf(stderr, "%s: %s\n", process_.c_str(), refused.c_str());
@@ -558,14 +559,16 @@ void Node::publishHeartbeat() {
   }
 
   if (bus_datagrams_ >= 0) {
-    int64_t datagrams = 0, malformed = 0;
+    int64_t datagrams = 0, malformed = 0, kernel_dropped = 0;
     for (const Endpoint* e : receiving_) {
       if (!e->inbox) continue;
       datagrams += e->inbox->datagrams();
       malformed += e->inbox->malformed();
+      kernel_dropped += e->inbox->kernelDropped();
     }
     health_->counters().set(bus_datagrams_, datagrams);
     health_->counters().set(bus_malformed_, malformed);
+    health_->counters().set(bus_kernel_dropped_, kernel_dropped);
   }
 
   heartbeat_t hb;

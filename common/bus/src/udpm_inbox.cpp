@@ -130,6 +130,7 @@ UdpmInbox::UdpmInbox(const std::string& url) : packet_(kMaxDatagram) {
   // As LCM: several processes share the port; the kernel stamps each datagram's arrival.
   if (fd_ < 0 || setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof on) != 0 ||
       setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMP, &on, sizeof on) != 0 ||
+      setsockopt(fd_, SOL_SOCKET, SO_RXQ_OVFL, &on, sizeof on) != 0 ||
       setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &buffer_size, sizeof buffer_size) != 0 ||
       bind(fd_, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0 ||
       setsockopt(fd_, IPPROTO_IP, IP_ADD_MEMBERSHIP, &membership, sizeof membership) != 0) {
@@ -164,7 +165,7 @@ bool UdpmInbox::drain(std::vector<WireMessage>* messages) {
   while (count < kMaxBatch) {
     sockaddr_in from{};
     iovec vector{packet_.data(), packet_.size()};
-    alignas(cmsghdr) char control[64];
+    alignas(cmsghdr) char control[128];  // SCM_TIMESTAMP and SO_RXQ_OVFL
     msghdr header{};
     header.msg_name = &from;
     header.msg_namelen = sizeof from;
@@ -185,6 +186,10 @@ bool UdpmInbox::drain(std::vector<WireMessage>* messages) {
         timeval stamp{};
         std::memcpy(&stamp, CMSG_DATA(c), sizeof stamp);
         receive_utime = int64_t{stamp.tv_sec} * 1000000 + stamp.tv_usec;
+      } else if (c->cmsg_level == SOL_SOCKET && c->cmsg_type == SO_RXQ_OVFL) {
+        uint32_t dropped = 0;  // the socket's total so far, sent with each datagram
+        std::memcpy(&dropped, CMSG_DATA(c), sizeof dropped);
+        kernel_dropped_ = dropped;
       }
     }
     const uint8_t* packet = packet_.data();

@@ -68,6 +68,9 @@ class UdpmInbox {
   bool drain(std::vector<WireMessage>* messages);
   int64_t datagrams() const { return datagrams_; }  // read so far
   int64_t malformed() const { return malformed_; }  // not LCM, or broken
+  // Datagrams the kernel dropped for this socket since it opened (its receive buffer was full:
+  // the process did not read in time), as of the last datagram read (SO_RXQ_OVFL).
+  int64_t kernelDropped() const { return kernel_dropped_; }
 
   static constexpr size_t kMaxBatch = 64;
 
@@ -79,6 +82,7 @@ class UdpmInbox {
   FragmentAssembler fragments_;
   int64_t datagrams_ = 0;
   int64_t malformed_ = 0;
+  int64_t kernel_dropped_ = 0;
 };
 
 }  // namespace sdlqr::bus

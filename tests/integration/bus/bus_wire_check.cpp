@@ -123,6 +123,28 @@ int main() {
     check(heard_other_port == 0, "a socket of the same group on another port heard none, heard " +
                                      std::to_string(heard_other_port));
   }
+  // A process that does not read while its socket's buffer fills loses datagrams in the kernel:
+  // what it never got is counted as bus.kernel_dropped, exactly (received + dropped = sent).
+  {
+    ProcessOptions slow;
+    slow.lcm_url = "udpm://239.255.76.67:7700?ttl=0&recv_buf_size=65536";
+    slow.bus_layout = "single";
+    bus::Node reader("slow_reader", slow);
+    int heard = 0;
+    reader.subscribeRaw("FLOOD", [&](const std::string&, const void*, uint32_t, int64_t) { ++heard; }, 100000);
+    lcm::LCM flood(slow.lcm_url);
+    const std::vector<uint8_t> payload(1000, 7);
+    constexpr int kSent = 3000;
+    for (int i = 0; i < kSent; ++i) flood.publish("FLOOD", payload.data(), static_cast<unsigned>(payload.size()));
+    spinFor(reader, 0.3);
+    reader.publishHeartbeat();  // the counters are brought up to date with each heartbeat
+    const int64_t kernel_dropped = reader.counters().value(reader.counters().find("bus.kernel_dropped"));
+    std::printf("fact: %d messages into a 64 KiB receive buffer unread: %d heard, %lld dropped by the kernel\n", kSent,
+                heard, static_cast<long long>(kernel_dropped));
+    check(kernel_dropped > 0 && heard + kernel_dropped == kSent,
+          "every message the unread socket lost counts as bus.kernel_dropped: heard " + std::to_string(heard) +
+              " + kernel_dropped " + std::to_string(kernel_dropped) + " = " + std::to_string(kSent));
+  }
   std::printf("%s\n", failures == 0 ? "PASS" : "FAIL");
   return failures == 0 ? 0 : 1;
 }

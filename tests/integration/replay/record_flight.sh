@@ -14,6 +14,7 @@ rm -rf "$work" && mkdir -p "$work"
 top_pid=$!
 "$build/bin/sdlqr-logger" record --out "$work/killed.lcmlog" >"$work/killed.out" 2>&1 &
 killed_pid=$!
+echo "$killed_pid" >"$work/killed.pid"  # its heartbeats in the flight's log say what it lost
 (
   sleep 8
   date +%s%6N >"$work/killed.utime"

@@ -282,6 +282,7 @@ class Node {
   Counters::Id bus_malformed_ = -1;
   Counters::Id bus_over_capacity_ = -1;
   Counters::Id bus_unrouted_ = -1;
+  Counters::Id bus_kernel_dropped_ = -1;
   int64_t received_ = 0;
   int64_t published_ = 0;
   int64_t heartbeat_seq_ = 0;
