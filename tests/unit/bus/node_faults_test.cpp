@@ -12,15 +12,13 @@
 #include "allocation_counter.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
+#include "bus_test_helpers.hpp"
 
 namespace sdlqr::bus {
 namespace {
 
-ProcessOptions memq() {
-  ProcessOptions options;
-  options.lcm_url = "memq://";
-  return options;
-}
+using test::keyOf;
+using test::memq;
 
 int64_t counter(Node& node, const std::string& name) { return node.health().counter(name); }
 
@@ -30,7 +28,7 @@ std::vector<uint8_t> encode(const state_estimate_t& m) {
   return bytes;
 }
 
-state_estimate_t estimate(int64_t seq) {
+state_estimate_t plainEstimate(int64_t seq) {
   StateEstimate s;
   s.utime = seq * 4000;
   s.seq = seq;
@@ -47,7 +45,7 @@ TEST(NodeDefences, TruncatedAndOversizedEncodingsAreSizeRejects) {
   Node node("test", memq());
   int handled = 0;
   node.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t&) { ++handled; }, 16);
-  std::vector<uint8_t> bytes = encode(estimate(1));
+  std::vector<uint8_t> bytes = encode(plainEstimate(1));
   node.lcm().publish("STATE_EST", bytes.data(), static_cast<unsigned>(bytes.size() - 1));  // truncated
   bytes.push_back(0);
   node.lcm().publish("STATE_EST", bytes.data(), static_cast<unsigned>(bytes.size()));  // one byte too many
@@ -63,7 +61,7 @@ TEST(NodeDefences, WrongFingerprintOfTheRightSizeIsADecodeReject) {
   Node node("test", memq());
   int handled = 0;
   node.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t&) { ++handled; }, 16);
-  std::vector<uint8_t> bytes = encode(estimate(1));
+  std::vector<uint8_t> bytes = encode(plainEstimate(1));
   bytes[0] ^= 0xff;
   node.lcm().publish("STATE_EST", bytes.data(), static_cast<unsigned>(bytes.size()));
   drain(node);
@@ -142,7 +140,7 @@ std::vector<int64_t> deliveredSeqs(uint64_t seed, int count) {
   node.subscribe<state_estimate_t>(channel::kStateEstimate, [&](const state_estimate_t& m) { seqs.push_back(m.seq); },
                                    64);
   for (int i = 0; i < count; ++i) {
-    node.publish(channel::kStateEstimate, estimate(i));
+    node.publish(channel::kStateEstimate, plainEstimate(i));
     node.spin(0);
   }
   return seqs;
@@ -181,7 +179,7 @@ TEST(FaultInjection, DelaysWithinTheRangeAndKeepsEachChannelInOrder) {
   constexpr int kCount = 300;
   for (int i = 0; i < kCount; ++i) {
     sent.push_back(Clock::now());
-    node.publish(channel::kStateEstimate, estimate(i));
+    node.publish(channel::kStateEstimate, plainEstimate(i));
     node.spin(0);
     const auto next = Clock::now() + std::chrono::milliseconds(1);
     while (Clock::now() < next) node.spin(1);

@@ -13,22 +13,13 @@
 #include "allocation_counter.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
+#include "bus_test_helpers.hpp"
 
 namespace sdlqr::bus {
 namespace {
 
-ProcessOptions memq() {
-  ProcessOptions options;
-  options.lcm_url = "memq://";
-  options.vehicle = "QUAD";
-  return options;
-}
-
-BusKey keyOf(uint8_t fill) {
-  BusKey key;
-  key.bytes.fill(fill);
-  return key;
-}
+using test::keyOf;
+using test::memq;
 
 rate_cmd_t command(int64_t seq) {
   RateCommand c;
@@ -46,7 +37,7 @@ void handleAll(Node& node) {
 
 // A memq bus is one Node's own: it hears what it publishes, and what is published on its LCM.
 struct Receiver {
-  Receiver() : node("lowlevel", memq()) {
+  Receiver() : node("lowlevel", memq("QUAD")) {
     node.subscribe<rate_cmd_t>(channel::kRateCommand, [&](const rate_cmd_t& m) { handled.push_back(m.seq); }, 64);
   }
   Node node;

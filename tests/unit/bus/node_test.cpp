@@ -10,17 +10,14 @@
 #include "allocation_counter.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
+#include "bus_test_helpers.hpp"
 
 
 namespace sdlqr::bus {
 namespace {
 
-ProcessOptions memq(const std::string& vehicle = "") {
-  ProcessOptions options;
-  options.lcm_url = "memq://";
-  options.vehicle = vehicle;
-  return options;
-}
+using test::keyOf;
+using test::memq;
 
 state_estimate_t estimate(int64_t seq) {
   StateEstimate s;

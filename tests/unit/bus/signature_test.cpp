@@ -11,15 +11,13 @@
 #include "sdlqr/bus/decode.hpp"
 #include "sdlqr/bus/signature.hpp"
 #include "sdlqr/rate_cmd_t.hpp"
+#include "bus_test_helpers.hpp"
 
 namespace sdlqr::bus {
 namespace {
 
-BusKey keyOf(uint8_t fill) {
-  BusKey key;
-  key.bytes.fill(fill);
-  return key;
-}
+using test::keyOf;
+using test::memq;
 
 std::vector<uint8_t> encodedRateCommand() {
   RateCommand command;

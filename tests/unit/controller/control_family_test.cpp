@@ -190,7 +190,7 @@ TEST(ThrustLagModel, FollowsAStepWithTheTimeConstant) {
 
 // The switch itself through PARAMS: the library ticks on a fixed estimate off the setpoint, so the
 // law's own output is constant and every change of the command is the transfer's.
-StateEstimate estimateAt(int64_t utime, const Vec3& p) {
+StateEstimate familyEstimate(int64_t utime, const Vec3& p) {
   StateEstimate e;
   e.utime = utime;
   e.seq = utime / 4000;
@@ -206,12 +206,12 @@ double largestRateStepAfterSwitch(double switch_time_s, ControlLaw to, int64_t* 
   const LqrParams lqr;
   StateDependentLqr controller(lqr, params);
   StateDependentLqr::Tick tick;
-  controller.onStateEstimate(estimateAt(0, Vec3::Zero()), tick);
+  controller.onStateEstimate(familyEstimate(0, Vec3::Zero()), tick);
   Command takeoff;
   takeoff.command = CommandType::kTakeoff;
   takeoff.position = Vec3(0, 0, 1);
   controller.handleCommand(takeoff);
-  controller.onStateEstimate(estimateAt(10000, Vec3::Zero()), tick);
+  controller.onStateEstimate(familyEstimate(10000, Vec3::Zero()), tick);
   Command hold = takeoff;
   hold.command = CommandType::kGoto;
   hold.seq = 1;
@@ -227,7 +227,7 @@ double largestRateStepAfterSwitch(double switch_time_s, ControlLaw to, int64_t* 
       update.law = to;
       EXPECT_EQ(controller.applyParams(update), ParamsOutcome::kApplied);
     }
-    if (!controller.onStateEstimate(estimateAt(utime, off), tick)) continue;
+    if (!controller.onStateEstimate(familyEstimate(utime, off), tick)) continue;
     if (previous.allFinite()) largest = std::max(largest, (tick.command.body_rate - previous).norm());
     previous = tick.command.body_rate;
     if (utime > 500000) {

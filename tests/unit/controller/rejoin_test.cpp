@@ -8,13 +8,12 @@
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/reference_generator.hpp"
 #include "sdlqr/controller/state_dependent_lqr.hpp"
+#include "sdlqr/math/model.hpp"
 
 namespace sdlqr::controller {
 namespace {
 
-constexpr double kG = 9.81;
-
-StateEstimate estimateAt(double t, const Vec3& p, double yaw = 0.0,
+StateEstimate rejoinEstimate(double t, const Vec3& p, double yaw = 0.0,
                          EstimatorStatus status = EstimatorStatus::kOk) {
   StateEstimate e;
   e.utime = static_cast<int64_t>(t * 1e6);
@@ -35,10 +34,10 @@ Command command(CommandType type, int64_t seq, const Vec3& position = Vec3::Zero
 }
 
 TEST(Rejoin, FirstEstimateAirborneHoldsWhereTheVehicleIsWithItsYaw) {
-  ReferenceGenerator gen(ControllerParams{}, kG);
+  ReferenceGenerator gen(ControllerParams{}, kDefaultGravity);
   Reference ref;
-  EXPECT_FALSE(gen.update(estimateAt(5.0, Vec3(0.1, 0.2, 0.7), 0.4, EstimatorStatus::kInitializing), ref));
-  ASSERT_TRUE(gen.update(estimateAt(5.01, Vec3(0.1, 0.2, 0.7), 0.4), ref));
+  EXPECT_FALSE(gen.update(rejoinEstimate(5.0, Vec3(0.1, 0.2, 0.7), 0.4, EstimatorStatus::kInitializing), ref));
+  ASSERT_TRUE(gen.update(rejoinEstimate(5.01, Vec3(0.1, 0.2, 0.7), 0.4), ref));
   EXPECT_EQ(gen.phase(), FlightPhase::kHold);
   EXPECT_TRUE(gen.rejoined());
   EXPECT_EQ(position(ref.x), Vec3(0.1, 0.2, 0.7));
@@ -50,54 +49,54 @@ TEST(Rejoin, FirstEstimateAirborneHoldsWhereTheVehicleIsWithItsYaw) {
 TEST(Rejoin, OnTheGroundOrBelowTheRejoinHeightStaysIdle) {
   ControllerParams params;
   params.rejoin_height = 0.2;
-  ReferenceGenerator gen(params, kG);
+  ReferenceGenerator gen(params, kDefaultGravity);
   Reference ref;
-  EXPECT_FALSE(gen.update(estimateAt(0.0, Vec3(0, 0, 0.19)), ref));
+  EXPECT_FALSE(gen.update(rejoinEstimate(0.0, Vec3(0, 0, 0.19)), ref));
   EXPECT_EQ(gen.phase(), FlightPhase::kIdle);
   // Only the first estimate decides: climbing later without a take-off (carried by hand) is no rejoin.
-  EXPECT_FALSE(gen.update(estimateAt(0.01, Vec3(0, 0, 1.0)), ref));
+  EXPECT_FALSE(gen.update(rejoinEstimate(0.01, Vec3(0, 0, 1.0)), ref));
   EXPECT_EQ(gen.phase(), FlightPhase::kIdle);
 }
 
 TEST(Rejoin, ReSentTakeoffSetsTheHeightAboveTheGroundPlaneAtTheHeldPlace) {
-  ReferenceGenerator gen(ControllerParams{}, kG);
+  ReferenceGenerator gen(ControllerParams{}, kDefaultGravity);
   Reference ref;
-  ASSERT_TRUE(gen.update(estimateAt(5.0, Vec3(0.05, -0.03, 0.62)), ref));
+  ASSERT_TRUE(gen.update(rejoinEstimate(5.0, Vec3(0.05, -0.03, 0.62)), ref));
   gen.handleCommand(command(CommandType::kTakeoff, 1, Vec3(0, 0, 1.0)));
-  ASSERT_TRUE(gen.update(estimateAt(5.51, Vec3(0.05, -0.03, 0.62)), ref));
+  ASSERT_TRUE(gen.update(rejoinEstimate(5.51, Vec3(0.05, -0.03, 0.62)), ref));
   EXPECT_EQ(gen.phase(), FlightPhase::kHold);
   EXPECT_FALSE(gen.rejoined());
   EXPECT_EQ(position(ref.x), Vec3(0.05, -0.03, 1.0));
 }
 
 TEST(Rejoin, TakeoffHeardBeforeTheFirstEstimateHoldsAtThatHeight) {
-  ReferenceGenerator gen(ControllerParams{}, kG);
+  ReferenceGenerator gen(ControllerParams{}, kDefaultGravity);
   Reference ref;
   gen.handleCommand(command(CommandType::kTakeoff, 1, Vec3(0, 0, 1.5)));
-  ASSERT_TRUE(gen.update(estimateAt(5.0, Vec3(0.3, 0.0, 0.8)), ref));
+  ASSERT_TRUE(gen.update(rejoinEstimate(5.0, Vec3(0.3, 0.0, 0.8)), ref));
   EXPECT_EQ(gen.phase(), FlightPhase::kHold) << "no take-off ramp from mid-air";
   EXPECT_EQ(position(ref.x), Vec3(0.3, 0.0, 1.5));
 }
 
 TEST(Rejoin, ReSentGotoRestoresTheSetpoint) {
-  ReferenceGenerator gen(ControllerParams{}, kG);
+  ReferenceGenerator gen(ControllerParams{}, kDefaultGravity);
   Reference ref;
-  ASSERT_TRUE(gen.update(estimateAt(5.0, Vec3(0.0, 0.0, 0.6)), ref));
+  ASSERT_TRUE(gen.update(rejoinEstimate(5.0, Vec3(0.0, 0.0, 0.6)), ref));
   gen.handleCommand(command(CommandType::kGoto, 3, Vec3(1, 2, 1.2), 0.3));
-  ASSERT_TRUE(gen.update(estimateAt(5.01, Vec3(0.0, 0.0, 0.6)), ref));
+  ASSERT_TRUE(gen.update(rejoinEstimate(5.01, Vec3(0.0, 0.0, 0.6)), ref));
   EXPECT_EQ(position(ref.x), Vec3(1, 2, 1.2));
   EXPECT_NEAR(quat::yaw(orientation(ref.x)), 0.3, 1e-12);
 }
 
 TEST(Rejoin, TakeoffWhileFlyingNormallyChangesNothing) {
-  ReferenceGenerator gen(ControllerParams{}, kG);
+  ReferenceGenerator gen(ControllerParams{}, kDefaultGravity);
   Reference ref;
   gen.handleCommand(command(CommandType::kTakeoff, 0, Vec3(0, 0, 1.0)));
-  ASSERT_TRUE(gen.update(estimateAt(0.0, Vec3::Zero()), ref));
+  ASSERT_TRUE(gen.update(rejoinEstimate(0.0, Vec3::Zero()), ref));
   EXPECT_FALSE(gen.rejoined());
   gen.handleCommand(command(CommandType::kGoto, 1, Vec3(0, 0, 2.0)));
   gen.handleCommand(command(CommandType::kTakeoff, 2, Vec3(0, 0, 1.0)));
-  ASSERT_TRUE(gen.update(estimateAt(0.03, Vec3(0, 0, 0.5)), ref));
+  ASSERT_TRUE(gen.update(rejoinEstimate(0.03, Vec3(0, 0, 0.5)), ref));
   EXPECT_EQ(position(ref.x), Vec3(0, 0, 2.0));
 }
 
@@ -107,25 +106,25 @@ TEST(Rejoin, ControllerIgnoresReSendsOfTheCommandItHandledAndARestartedOneLearns
   const LqrParams lqr;
   StateDependentLqr running(lqr, ControllerParams{});
   StateDependentLqr::Tick tick;
-  running.onStateEstimate(estimateAt(0.0, Vec3::Zero()), tick);
+  running.onStateEstimate(rejoinEstimate(0.0, Vec3::Zero()), tick);
   running.handleCommand(command(CommandType::kTakeoff, 0, Vec3(0, 0, 1)));
-  ASSERT_TRUE(running.onStateEstimate(estimateAt(0.01, Vec3::Zero()), tick));
+  ASSERT_TRUE(running.onStateEstimate(rejoinEstimate(0.01, Vec3::Zero()), tick));
   running.handleCommand(command(CommandType::kGoto, 1, Vec3(0.5, 0, 1)));
-  ASSERT_TRUE(running.onStateEstimate(estimateAt(0.02, Vec3(0, 0, 0.3)), tick));
+  ASSERT_TRUE(running.onStateEstimate(rejoinEstimate(0.02, Vec3(0, 0, 0.3)), tick));
   running.handleCommand(command(CommandType::kLand, 2));
-  ASSERT_TRUE(running.onStateEstimate(estimateAt(0.03, Vec3(0, 0, 0.3)), tick));
+  ASSERT_TRUE(running.onStateEstimate(rejoinEstimate(0.03, Vec3(0, 0, 0.3)), tick));
   EXPECT_EQ(running.status().phase, FlightPhase::kLanding);
   Command resend = command(CommandType::kLand, 2);
   resend.utime += 5'000'000;
   running.handleCommand(resend);
   Command goto_resend = command(CommandType::kGoto, 2, Vec3(0.5, 0, 1));  // same seq: a re-send
   running.handleCommand(goto_resend);
-  ASSERT_TRUE(running.onStateEstimate(estimateAt(0.04, Vec3(0, 0, 0.3)), tick));
+  ASSERT_TRUE(running.onStateEstimate(rejoinEstimate(0.04, Vec3(0, 0, 0.3)), tick));
   EXPECT_EQ(running.status().phase, FlightPhase::kLanding) << "a re-send was acted on";
   EXPECT_EQ(tick.reference.command_seq, 2);
 
   StateDependentLqr restarted(lqr, ControllerParams{});
-  ASSERT_TRUE(restarted.onStateEstimate(estimateAt(8.0, Vec3(0.02, 0.01, 0.7)), tick));
+  ASSERT_TRUE(restarted.onStateEstimate(rejoinEstimate(8.0, Vec3(0.02, 0.01, 0.7)), tick));
   EXPECT_EQ(restarted.status().phase, FlightPhase::kHold);
   EXPECT_EQ(position(tick.reference.x), Vec3(0.02, 0.01, 0.7));
   EXPECT_EQ(tick.command.gains_status, GainsFreshness::kFallback) << "no GAINS yet: the hover K";
@@ -133,7 +132,7 @@ TEST(Rejoin, ControllerIgnoresReSendsOfTheCommandItHandledAndARestartedOneLearns
   Command takeoff = command(CommandType::kTakeoff, 0, Vec3(0, 0, 1));
   takeoff.utime = 8'000'000;
   restarted.handleCommand(takeoff);
-  ASSERT_TRUE(restarted.onStateEstimate(estimateAt(8.01, Vec3(0.02, 0.01, 0.7)), tick));
+  ASSERT_TRUE(restarted.onStateEstimate(rejoinEstimate(8.01, Vec3(0.02, 0.01, 0.7)), tick));
   EXPECT_EQ(position(tick.reference.x), Vec3(0.02, 0.01, 1.0));
   EXPECT_GT(tick.command.thrust, lqr.gravity);
 }

@@ -9,9 +9,12 @@
 #include "sdlqr/math/lqr.hpp"
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/state_dependent_lqr.hpp"
+#include "controller_test_commands.hpp"
 
 namespace sdlqr::controller {
 namespace {
+
+using test::command;
 
 StateEstimate estimateAt(int64_t utime, const Vec3& p, const Quat& q = identityQuat()) {
   StateEstimate e;
@@ -21,14 +24,6 @@ StateEstimate estimateAt(int64_t utime, const Vec3& p, const Quat& q = identityQ
   e.orientation = q;
   e.status = EstimatorStatus::kOk;
   return e;
-}
-
-Command command(CommandType type, const Vec3& position = Vec3::Zero(), double yaw = 0.0) {
-  Command c;
-  c.command = type;
-  c.position = position;
-  c.yaw = yaw;
-  return c;
 }
 
 // Brings a controller to a held setpoint at (0, 0, 1) with the given yaw after take-off.

@@ -16,8 +16,6 @@ namespace {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
-double seconds(int64_t utime) { return 1e-6 * static_cast<double>(utime); }
-
 // Feeds events with arrival time < until_utime; returns the index of the first one not fed.
 size_t feedUntil(Estimator& estimator, const std::vector<SensorEvent>& events, size_t from, int64_t until_utime) {
   size_t i = from;

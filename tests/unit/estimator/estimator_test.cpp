@@ -18,8 +18,6 @@ namespace {
 constexpr double kPositionTarget = 0.03;  // [m] RMS, integration target
 constexpr double kAttitudeTargetDeg = 1.0;
 
-double seconds(int64_t utime) { return 1e-6 * static_cast<double>(utime); }
-
 TEST(Estimator, InitialisesFromTheFirstVioPose) {
   // GIVEN a hovering vehicle whose IMU has been running for 0.5 s without any pose
   SensorSimulator sensors{AnalyticTrajectory(TrajectorySpec::hover(Vec3(1.0, -2.0, 1.5), 0.7)), SensorSpec()};

@@ -18,8 +18,6 @@
 namespace sdlqr::estimator::test {
 namespace {
 
-double seconds(int64_t utime) { return 1e-6 * static_cast<double>(utime); }
-
 // Capture time of every pose handed over, in the order of RunResult::vio_outcomes.
 struct PoseLog {
   std::vector<int64_t> captures;

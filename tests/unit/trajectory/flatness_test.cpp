@@ -12,26 +12,24 @@
 namespace sdlqr::trajectory {
 namespace {
 
-constexpr double kGravity = 9.81;
-
 // Flies the feed-forward inputs open loop through the paper's model (RK4, inputs taken from the
 // flat map at each stage time) and returns the largest position error over [t0, t0 + span].
 double openLoopDrift(const MinSnapTrajectory& trajectory, double t0, double span, double* attitude_error = nullptr) {
   const double h = 1e-3;
-  auto input = [&](double t) { return flatToReference(trajectory.evaluate(t), kGravity).u; };
-  State x = flatToReference(trajectory.evaluate(t0), kGravity).x;
+  auto input = [&](double t) { return flatToReference(trajectory.evaluate(t), kDefaultGravity).u; };
+  State x = flatToReference(trajectory.evaluate(t0), kDefaultGravity).x;
   double worst = 0.0;
   double worst_attitude = 0.0;
   const int steps = static_cast<int>(std::lround(span / h));
   for (int i = 0; i < steps; ++i) {
     const double t = t0 + i * h;
-    const State k1 = dynamics(x, input(t), kGravity);
-    const State k2 = dynamics(x + 0.5 * h * k1, input(t + 0.5 * h), kGravity);
-    const State k3 = dynamics(x + 0.5 * h * k2, input(t + 0.5 * h), kGravity);
-    const State k4 = dynamics(x + h * k3, input(t + h), kGravity);
+    const State k1 = dynamics(x, input(t), kDefaultGravity);
+    const State k2 = dynamics(x + 0.5 * h * k1, input(t + 0.5 * h), kDefaultGravity);
+    const State k3 = dynamics(x + 0.5 * h * k2, input(t + 0.5 * h), kDefaultGravity);
+    const State k4 = dynamics(x + h * k3, input(t + h), kDefaultGravity);
     x += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
     orientation(x).normalize();
-    const State reference = flatToReference(trajectory.evaluate(t + h), kGravity).x;
+    const State reference = flatToReference(trajectory.evaluate(t + h), kDefaultGravity).x;
     worst = std::max(worst, (position(x) - position(reference)).norm());
     worst_attitude = std::max(worst_attitude, quat::boxMinus(orientation(x), orientation(reference)).norm());
   }
@@ -93,9 +91,9 @@ TEST(Flatness, AttitudeAndThrustMatchAccelerationPlusGravity) {
   const MinSnapTrajectory trajectory = generateMinSnap(waypoints, options);
   for (double t = 0.0; t < trajectory.duration(); t += 0.05) {
     const FlatOutput flat = trajectory.evaluate(t);
-    const FlatReference ref = flatToReference(flat, kGravity);
+    const FlatReference ref = flatToReference(flat, kDefaultGravity);
     ASSERT_FALSE(ref.singular);
-    const Vec3 thrust_vector = flat.acceleration + Vec3(0.0, 0.0, kGravity);
+    const Vec3 thrust_vector = flat.acceleration + Vec3(0.0, 0.0, kDefaultGravity);
     EXPECT_NEAR(ref.u[kThrust], thrust_vector.norm(), 1e-12);
     EXPECT_LT((ref.u[kThrust] * quat::bodyZ(orientation(ref.x)) - thrust_vector).norm(), 1e-12);
     EXPECT_NEAR(std::remainder(quat::yaw(orientation(ref.x)) - flat.yaw, 2 * M_PI), 0.0, 1e-12);
@@ -118,10 +116,10 @@ TEST(Flatness, BodyRatesMatchTheAttitudeDerivative) {
   const double h = 1e-5;
   double worst = 0.0;
   for (double t = 0.1; t < trajectory.duration() - 0.1; t += 0.1) {
-    const Quat before = orientation(flatToReference(trajectory.evaluate(t - h), kGravity).x);
-    const Quat after = orientation(flatToReference(trajectory.evaluate(t + h), kGravity).x);
+    const Quat before = orientation(flatToReference(trajectory.evaluate(t - h), kDefaultGravity).x);
+    const Quat after = orientation(flatToReference(trajectory.evaluate(t + h), kDefaultGravity).x);
     const Vec3 measured = quat::boxMinus(after, before) / (2.0 * h);
-    const Vec3 omega = bodyRate(flatToReference(trajectory.evaluate(t), kGravity).u);
+    const Vec3 omega = bodyRate(flatToReference(trajectory.evaluate(t), kDefaultGravity).u);
     worst = std::max(worst, (measured - omega).norm());
   }
   std::cout << "  largest body-rate error against the attitude's finite difference " << worst << " rad/s\n";
@@ -132,17 +130,17 @@ TEST(Flatness, HoverIsLevelWithHoverThrust) {
   FlatOutput hover;
   hover.position = Vec3(1, 2, 3);
   hover.yaw = 0.4;
-  const FlatReference ref = flatToReference(hover, kGravity);
-  EXPECT_NEAR(ref.u[kThrust], kGravity, 1e-15);
+  const FlatReference ref = flatToReference(hover, kDefaultGravity);
+  EXPECT_NEAR(ref.u[kThrust], kDefaultGravity, 1e-15);
   EXPECT_LT(bodyRate(ref.u).norm(), 1e-15);
   EXPECT_LT((orientation(ref.x) - quat::fromYaw(0.4)).norm(), 1e-15);
 }
 
 TEST(Flatness, FreeFallIsFlaggedSingular) {
   FlatOutput falling;
-  falling.acceleration = Vec3(0.0, 0.0, -kGravity);
+  falling.acceleration = Vec3(0.0, 0.0, -kDefaultGravity);
   falling.jerk = Vec3(1.0, 0.0, 0.0);
-  const FlatReference ref = flatToReference(falling, kGravity);
+  const FlatReference ref = flatToReference(falling, kDefaultGravity);
   EXPECT_TRUE(ref.singular);
   EXPECT_TRUE(ref.x.allFinite());
   EXPECT_TRUE(ref.u.allFinite());

@@ -2,6 +2,7 @@
 // Drives an Estimator with a SensorSimulator's events and scores every output against the
 // analytic truth at the output's own time.
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -9,6 +10,9 @@
 #include "sensor_simulator.hpp"
 
 namespace sdlqr::estimator::test {
+
+// A bus utime [us] in seconds.
+inline double seconds(int64_t utime) { return 1e-6 * static_cast<double>(utime); }
 
 struct OutputRecord {
   StateEstimate estimate;

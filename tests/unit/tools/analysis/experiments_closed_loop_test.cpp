@@ -8,11 +8,15 @@
 
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/closedloop/closed_loop.hpp"
+#include "test_paths.hpp"
+#include "analysis_test_helpers.hpp"
 
 namespace sdlqr {
 namespace {
 
-const std::string kSourceDir = SDLQR_SOURCE_DIR;
+using ::sdlqr::test::findCheck;
+
+using ::sdlqr::test::kSourceDir;
 
 struct Flight {
   logger::FlightLog log;
@@ -93,13 +97,6 @@ TEST(Experiments, PulledSpatialSkipsNothingAndTemporalSkipsSamples) {
   std::cout << " m\n";
   // Held 2 s: spatial finishes about 2 s later than the temporal schedule.
   EXPECT_GT(s.completion_time, t.completion_time + 1.0);
-}
-
-const analysis::Check* findCheck(const analysis::FlightReport& report, const std::string& name) {
-  for (const analysis::Check& c : report.checks) {
-    if (c.name == name) return &c;
-  }
-  return nullptr;
 }
 
 // The saturation criteria measure where saturation happens: a controller whose thrust law runs

@@ -11,11 +11,15 @@
 
 #include "sdlqr/analysis/criteria.hpp"
 #include "sdlqr/analysis/flight_report.hpp"
+#include "analysis_test_helpers.hpp"
+#include "analysis_test_time.hpp"
 
 namespace sdlqr {
 namespace {
 
-int64_t micros(double seconds) { return static_cast<int64_t>(std::llround(seconds * 1e6)); }
+using ::sdlqr::test::micros;
+
+using ::sdlqr::test::findCheck;
 
 template <class T>
 void add(logger::Series<T>& series, const T& message, int64_t receive_utime) {
@@ -64,13 +68,6 @@ mission::Scenario scenarioWith(std::map<std::string, double> criteria) {
   jump.label = "jump +x";
   s.events = {takeoff, jump};
   return s;
-}
-
-const analysis::Check* findCheck(const analysis::FlightReport& report, const std::string& name) {
-  for (const analysis::Check& c : report.checks) {
-    if (c.name == name) return &c;
-  }
-  return nullptr;
 }
 
 // First-order approach to 1 m with time constant tau.

@@ -9,11 +9,12 @@
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/analysis/path_tracking.hpp"
 #include "sdlqr/math/quaternion.hpp"
+#include "analysis_test_time.hpp"
 
 namespace sdlqr {
 namespace {
 
-int64_t micros(double seconds) { return static_cast<int64_t>(std::llround(seconds * 1e6)); }
+using ::sdlqr::test::micros;
 
 // Samples every dt along `at(t)` for t in [0, duration], moving at unit speed.
 template <class PathAt>
@@ -285,7 +286,7 @@ TEST(PathTracking, UntrackedTrajectoryIsNotReported) {
   EXPECT_TRUE(analysis::analyzePathTracking(log).empty());
 }
 
-mission::Scenario scenarioWith(std::map<std::string, double> criteria) {
+mission::Scenario heldPathScenario(std::map<std::string, double> criteria) {
   mission::Scenario s;
   s.name = "synthetic";
   s.criteria = std::move(criteria);
@@ -302,30 +303,30 @@ TEST(PathTrackingCriteria, ChecksFollowTheScenario) {
   const std::map<std::string, double> spatial_criteria = {
       {"skip_radius", 0.25}, {"skipped_samples_max", 0}, {"path_return_error", 0.1}, {"path_return_time", 2.0},
       {"trajectory_completed", 1}};
-  const auto a = analysis::analyzeFlight(spatial.log, scenarioWith(spatial_criteria));
+  const auto a = analysis::analyzeFlight(spatial.log, heldPathScenario(spatial_criteria));
   analysis::writeSummary(a, std::cout);
   EXPECT_TRUE(a.passed());
   ASSERT_EQ(a.trajectories.size(), 1u);
   EXPECT_EQ(a.trajectories[0].label, "held");
   // The same criteria fail the temporal flight on its skipped samples.
-  const auto b = analysis::analyzeFlight(temporal.log, scenarioWith(spatial_criteria));
+  const auto b = analysis::analyzeFlight(temporal.log, heldPathScenario(spatial_criteria));
   EXPECT_FALSE(b.passed());
   bool skip_check_failed = false;
   for (const auto& c : b.checks) skip_check_failed |= (c.name == "skipped_samples_max[held]" && !c.pass);
   EXPECT_TRUE(skip_check_failed);
-  const auto c = analysis::analyzeFlight(temporal.log, scenarioWith({{"skip_radius", 0.25}, {"skipped_samples_min", 1}}));
+  const auto c = analysis::analyzeFlight(temporal.log, heldPathScenario({{"skip_radius", 0.25}, {"skipped_samples_min", 1}}));
   EXPECT_TRUE(c.passed());
   // A criterion about trajectories in a flight without one fails instead of passing vacuously.
   logger::FlightLog empty;
   addTruth(empty, 1.0, Vec3::Zero());
-  EXPECT_FALSE(analysis::analyzeFlight(empty, scenarioWith({{"path_error_max", 1.0}})).passed());
+  EXPECT_FALSE(analysis::analyzeFlight(empty, heldPathScenario({{"path_error_max", 1.0}})).passed());
   // Thrust limits are needed to judge thrust.
-  EXPECT_THROW(analysis::analyzeFlight(spatial.log, scenarioWith({{"thrust_limit_violations_max", 0}})),
+  EXPECT_THROW(analysis::analyzeFlight(spatial.log, heldPathScenario({{"thrust_limit_violations_max", 0}})),
                std::invalid_argument);
   analysis::AnalysisOptions options;
   options.path.thrust_min = 2.0;
   options.path.thrust_max = 18.0;
-  EXPECT_NO_THROW(analysis::analyzeFlight(spatial.log, scenarioWith({{"thrust_limit_violations_max", 0}}), options));
+  EXPECT_NO_THROW(analysis::analyzeFlight(spatial.log, heldPathScenario({{"thrust_limit_violations_max", 0}}), options));
 }
 
 }  // namespace

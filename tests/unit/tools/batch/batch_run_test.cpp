@@ -17,13 +17,15 @@
 #include "sdlqr/batch/runner.hpp"
 #include "sdlqr/batch/summary.hpp"
 #include "sdlqr/logger/csv.hpp"
+#include "batch_test_dir.hpp"
 
 namespace sdlqr::batch {
 namespace {
 
-const std::string kDir = SDLQR_SOURCE_DIR "/tests/unit/tools/batch";
+using test::kDir;
+
 // Of this process: ctest runs each test case in a process of its own, several at once.
-const std::string kWork = SDLQR_BINARY_DIR "/batch_run_test/" + std::to_string(::getpid());
+const std::string kRunWork = SDLQR_BINARY_DIR "/batch_run_test/" + std::to_string(::getpid());
 
 std::string fileText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -33,7 +35,7 @@ std::string fileText(const std::string& path) {
 }
 
 std::string freshDir(const std::string& name) {
-  const std::string dir = kWork + "/" + name;
+  const std::string dir = kRunWork + "/" + name;
   EXPECT_EQ(std::system(("rm -rf '" + dir + "'").c_str()), 0);
   return dir;
 }
@@ -41,7 +43,7 @@ std::string freshDir(const std::string& name) {
 // This process's folders go when it ends.
 class RemoveWorkFolder : public ::testing::Environment {
  public:
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + kWork + "'").c_str()), 0); }
+  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + kRunWork + "'").c_str()), 0); }
 };
 const auto* const kRemoveWorkFolder = ::testing::AddGlobalTestEnvironment(new RemoveWorkFolder);
 
@@ -64,7 +66,7 @@ class SmallBatch : public ::testing::Test {
     delete context_;
     delete reference_;
   }
-  static std::string referenceCsv() { return fileText(kWork + "/jobs1/flights.csv"); }
+  static std::string referenceCsv() { return fileText(kRunWork + "/jobs1/flights.csv"); }
   static BatchContext* context_;
   static RunResult* reference_;
 };
@@ -104,7 +106,7 @@ TEST_F(SmallBatch, ShardsMergeIntoTheSingleRun) {
   const std::string merged = freshDir("merged");
   mergeShards(shards, merged, *context_);
   EXPECT_EQ(fileText(merged + "/flights.csv"), referenceCsv());
-  EXPECT_EQ(fileText(merged + "/batch.yaml"), fileText(kWork + "/jobs1/batch.yaml"));
+  EXPECT_EQ(fileText(merged + "/batch.yaml"), fileText(kRunWork + "/jobs1/batch.yaml"));
   EXPECT_EQ(summaryText(*context_, readTable(merged + "/flights.csv")), summaryText(*context_, reference_->table));
 
   // What merge refuses: a shard missing, a shard twice, an unfinished shard, another batch.
@@ -158,8 +160,8 @@ TEST_F(SmallBatch, AKilledRunResumesWithoutFlyingAFinishedFlightAgain) {
 
 TEST_F(SmallBatch, AFolderOfAnotherBatchOrShardIsRefused) {
   const BatchContext other = BatchContext::load(kDir + "/nominal_plant.yaml");
-  EXPECT_THROW(runIn(other, kWork + "/jobs1", 1), std::runtime_error);
-  EXPECT_THROW(runIn(*context_, kWork + "/jobs1", 1, Shard{1, 2}), std::runtime_error);
+  EXPECT_THROW(runIn(other, kRunWork + "/jobs1", 1), std::runtime_error);
+  EXPECT_THROW(runIn(*context_, kRunWork + "/jobs1", 1, Shard{1, 2}), std::runtime_error);
 }
 
 TEST_F(SmallBatch, AReflownFlightReproducesItsRowFromItsFiles) {

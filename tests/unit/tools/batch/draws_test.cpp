@@ -4,11 +4,13 @@
 #include <set>
 
 #include "sdlqr/batch/draws.hpp"
+#include "batch_test_dir.hpp"
 
 namespace sdlqr::batch {
 namespace {
 
-const std::string kDir = SDLQR_SOURCE_DIR "/tests/unit/tools/batch";
+using test::kDir;
+
 
 TEST(Draws, SameFlightSameDrawWhateverOrder) {
   const BatchSpec spec = BatchSpec::load(kDir + "/small_batch.yaml");

@@ -4,11 +4,13 @@
 #include <fstream>
 
 #include "sdlqr/batch/spec.hpp"
+#include "batch_test_dir.hpp"
 
 namespace sdlqr::batch {
 namespace {
 
-const std::string kDir = SDLQR_SOURCE_DIR "/tests/unit/tools/batch";
+using test::kDir;
+
 
 std::string writeSpec(const std::string& name, const std::string& text) {
   const std::string path = std::string(SDLQR_BINARY_DIR) + "/batch_spec_" + name + ".yaml";

@@ -9,15 +9,15 @@
 
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/closedloop/closed_loop.hpp"
+#include "test_paths.hpp"
+#include "closedloop_test_scenarios.hpp"
 
 namespace sdlqr {
 namespace {
 
-const std::string kSourceDir = SDLQR_SOURCE_DIR;
+using ::sdlqr::test::scenarioNamed;
 
-mission::Scenario scenarioNamed(const std::string& name) {
-  return mission::Scenario::load(kSourceDir + "/config/scenarios/" + name + ".yaml");
-}
+using ::sdlqr::test::kSourceDir;
 
 closedloop::StackConfig configWithLaw(const mission::Scenario& scenario, ControlLaw law) {
   closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);

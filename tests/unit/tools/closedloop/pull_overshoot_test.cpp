@@ -14,11 +14,12 @@
 
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/closedloop/closed_loop.hpp"
+#include "test_paths.hpp"
 
 namespace sdlqr {
 namespace {
 
-const std::string kSourceDir = SDLQR_SOURCE_DIR;
+using ::sdlqr::test::kSourceDir;
 
 struct PullResult {
   double deviation = 0.0;  // [m]

@@ -8,27 +8,27 @@
 
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/closedloop/closed_loop.hpp"
+#include "test_paths.hpp"
+#include "closedloop_test_scenarios.hpp"
 
 namespace sdlqr {
 namespace {
 
-const std::string kSourceDir = SDLQR_SOURCE_DIR;
+using ::sdlqr::test::scenarioNamed;
 
-mission::Scenario scenarioNamed(const std::string& name) {
-  return mission::Scenario::load(kSourceDir + "/config/scenarios/" + name + ".yaml");
-}
+using ::sdlqr::test::kSourceDir;
 
-struct Flight {
+struct StressedFlight {
   logger::FlightLog log;
   analysis::FlightReport report;
   int64_t throws_detected = 0;
 };
 
-Flight fly(const mission::Scenario& scenario) {
+StressedFlight fly(const mission::Scenario& scenario) {
   const closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);
   closedloop::ClosedLoop loop(config, scenario);
   loop.run();
-  Flight f;
+  StressedFlight f;
   f.log = loop.log();
   f.report = analysis::analyzeFlight(f.log, scenario);
   const Counters& counters = loop.mission().health().counters();
@@ -43,7 +43,7 @@ const analysis::Check* checkNamed(const analysis::FlightReport& r, const std::st
   return nullptr;
 }
 
-void expectAllPass(const Flight& f) {
+void expectAllPass(const StressedFlight& f) {
   for (const analysis::Check& c : f.report.checks) {
     EXPECT_TRUE(c.pass) << f.report.scenario << ": " << c.name << " = " << c.value << " (limit " << c.limit << ")";
   }
@@ -78,7 +78,7 @@ double meanHorizontalError(const logger::FlightLog& log, double from, double to)
   return n ? sum / n : NAN;
 }
 
-void printRecovery(const Flight& f) {
+void printRecovery(const StressedFlight& f) {
   ASSERT_TRUE(f.report.recovery.has_value());
   const analysis::RecoveryReport& r = *f.report.recovery;
   std::cout << f.report.scenario << ": initial tilt " << r.initial_tilt_deg << " deg, level after " << r.level_time
@@ -93,8 +93,8 @@ TEST(Stressors, MassMismatchChangesTheHoverMeasurably) {
   const mission::Scenario heavy = scenarioNamed("mass_plus20");
   mission::Scenario nominal = heavy;
   nominal.sim.plant = sim::PlantOverride();
-  const Flight a = fly(nominal);
-  const Flight b = fly(heavy);
+  const StressedFlight a = fly(nominal);
+  const StressedFlight b = fly(heavy);
   const double nominal_error = meanHeightError(a.log, 6.0, 9.0);
   const double heavy_error = meanHeightError(b.log, 6.0, 9.0);
   std::cout << "hover z error, 6-9 s: nominal mass " << nominal_error << " m, +20 % mass " << heavy_error << " m\n";
@@ -106,11 +106,11 @@ TEST(Stressors, MassMismatchChangesTheHoverMeasurably) {
 // another seed other gusts.
 TEST(Stressors, WindAndGustsRepeatForASeed) {
   const mission::Scenario windy = scenarioNamed("wind_gusts");
-  const Flight a = fly(windy);
-  const Flight b = fly(windy);
+  const StressedFlight a = fly(windy);
+  const StressedFlight b = fly(windy);
   mission::Scenario other_seed = windy;
   other_seed.seed += 1;
-  const Flight c = fly(other_seed);
+  const StressedFlight c = fly(other_seed);
   ASSERT_EQ(a.log.sim_truth.size(), b.log.sim_truth.size());
   for (size_t i = 0; i < a.log.sim_truth.size(); ++i) {
     ASSERT_EQ(a.log.sim_truth[i].position, b.log.sim_truth[i].position) << "sample " << i;
@@ -125,7 +125,7 @@ TEST(Stressors, WindAndGustsRepeatForASeed) {
   // The steady wind pushes downwind: the hold sits measurably downwind of no wind.
   mission::Scenario calm = windy;
   calm.sim.wind = sim::WindParams();
-  const Flight d = fly(calm);
+  const StressedFlight d = fly(calm);
   const double windy_error = meanHorizontalError(a.log, 6.0, 12.0);
   const double calm_error = meanHorizontalError(d.log, 6.0, 12.0);
   std::cout << "wind_gusts: mean horizontal hold error 6-12 s " << windy_error << " m (calm " << calm_error
@@ -136,7 +136,7 @@ TEST(Stressors, WindAndGustsRepeatForASeed) {
 
 // 60 degrees: every recovery criterion of the scenario passes.
 TEST(Stressors, AirborneStartAt60DegreesRecovers) {
-  const Flight f = fly(scenarioNamed("recover_60"));
+  const StressedFlight f = fly(scenarioNamed("recover_60"));
   printRecovery(f);
   expectAllPass(f);
 }
@@ -148,7 +148,7 @@ TEST(Stressors, AirborneStartAt60DegreesRecovers) {
 TEST(Stressors, AirborneStartsAt120And180DegreesAreRightedWithoutTouchingTheGround) {
   for (const char* name : {"recover_120", "recover_180"}) {
     const mission::Scenario scenario = scenarioNamed(name);
-    const Flight f = fly(scenario);
+    const StressedFlight f = fly(scenario);
     printRecovery(f);
     EXPECT_FALSE(f.report.crashed) << name;
     EXPECT_TRUE(std::isfinite(f.report.recovery->level_time)) << name;
@@ -163,7 +163,7 @@ TEST(Stressors, AirborneStartsAt120And180DegreesAreRightedWithoutTouchingTheGrou
 TEST(Stressors, AnAirborneStartNeverArmedFailsTheRecoveryChecks) {
   mission::Scenario unarmed = scenarioNamed("recover_60");
   unarmed.events.clear();
-  const Flight f = fly(unarmed);
+  const StressedFlight f = fly(unarmed);
   for (const char* key : {"recovery_level_time", "recovery_settle_time", "recovery_height_lost"}) {
     const analysis::Check* c = checkNamed(f.report, key);
     ASSERT_NE(c, nullptr) << key;
@@ -172,7 +172,7 @@ TEST(Stressors, AnAirborneStartNeverArmedFailsTheRecoveryChecks) {
 }
 
 TEST(Stressors, ThrowIsDetectedArmedAndRecovered) {
-  const Flight f = fly(scenarioNamed("throw"));
+  const StressedFlight f = fly(scenarioNamed("throw"));
   printRecovery(f);
   EXPECT_EQ(f.throws_detected, 1);
   expectAllPass(f);
@@ -182,7 +182,7 @@ TEST(Stressors, ThrowIsDetectedArmedAndRecovered) {
 TEST(Stressors, AThrowWithoutThrowModeFailsTheThrowChecks) {
   mission::Scenario no_mode = scenarioNamed("throw");
   no_mode.throw_mode = mission::ThrowModeParams();
-  const Flight f = fly(no_mode);
+  const StressedFlight f = fly(no_mode);
   EXPECT_EQ(f.throws_detected, 0);
   for (const char* key : {"throw_detect_delay", "recovery_level_time", "recovery_settle_time"}) {
     const analysis::Check* c = checkNamed(f.report, key);
@@ -196,7 +196,7 @@ TEST(Stressors, AThrowWithoutThrowModeFailsTheThrowChecks) {
 TEST(Stressors, NoThrowIsDetectedInANormalFlight) {
   mission::Scenario flight = scenarioNamed("hover_jumps");
   flight.throw_mode.at = 0.0;
-  const Flight f = fly(flight);
+  const StressedFlight f = fly(flight);
   EXPECT_EQ(f.throws_detected, 0);
   EXPECT_GT(f.report.setpoints.size(), 6u);  // the flight flew
 }
@@ -204,7 +204,7 @@ TEST(Stressors, NoThrowIsDetectedInANormalFlight) {
 // A fast closed path the vehicle can fly is tracked to the end of its time, never aborted; the
 // lemniscate asked beyond the vehicle flies time-scaled.
 TEST(Stressors, FeasibleFastPathsAreFlownAndNotAborted) {
-  const Flight f = fly(scenarioNamed("aggressive_path"));
+  const StressedFlight f = fly(scenarioNamed("aggressive_path"));
   ASSERT_EQ(f.report.trajectories.size(), 2u);
   for (const analysis::PathTrackingReport& t : f.report.trajectories) {
     std::cout << t.label << ": path error RMS " << t.path_error_rms << " m, max " << t.path_error_max << " m, "

@@ -8,18 +8,20 @@
 
 #include "sdlqr/batch/results.hpp"
 #include "sdlqr/compare/benchmark.hpp"
+#include "compare_test_dir.hpp"
 
 namespace sdlqr::compare {
 namespace {
 
-const std::string kDir = SDLQR_SOURCE_DIR "/tests/unit/tools/compare";
-const std::string kWork = SDLQR_BINARY_DIR "/compare_benchmark_test/" + std::to_string(::getpid());
+using test::kDir;
+
+const std::string kBenchmarkWork = SDLQR_BINARY_DIR "/compare_benchmark_test/" + std::to_string(::getpid());
 
 // A benchmark file of `text` (scenarios named by absolute path or by name).
 std::string benchmarkFile(const std::string& text) {
-  batch::makeDirectories(kWork);
+  batch::makeDirectories(kBenchmarkWork);
   static int count = 0;
-  const std::string path = kWork + "/benchmark" + std::to_string(count++) + ".yaml";
+  const std::string path = kBenchmarkWork + "/benchmark" + std::to_string(count++) + ".yaml";
   std::ofstream(path) << text;
   return path;
 }

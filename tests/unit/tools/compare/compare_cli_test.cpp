@@ -15,7 +15,7 @@ namespace {
 
 const std::string kBinary = SDLQR_BINARY_DIR "/bin/sdlqr-compare";
 const std::string kBenchmark = SDLQR_SOURCE_DIR "/tests/unit/tools/compare/small_benchmark.yaml";
-const std::string kWork = SDLQR_BINARY_DIR "/compare_cli_test/" + std::to_string(::getpid());
+const std::string kCliWork = SDLQR_BINARY_DIR "/compare_cli_test/" + std::to_string(::getpid());
 
 struct Outcome {
   int exit_code = -1;
@@ -49,23 +49,23 @@ TEST(CompareCli, HelpNamesEveryOption) {
 }
 
 TEST(CompareCli, BadOptionsAndFilesFailWithOneLineNamingTheKey) {
-  const std::string out = " --out " + kWork + "/out";
+  const std::string out = " --out " + kCliWork + "/out";
   expectOneLineErrorNaming(kBenchmark + out + " --controllers sdlqr,pid", "--controllers[1]");
   expectOneLineErrorNaming(kBenchmark + out + " --scenarios hover", "--scenarios[0]");
   expectOneLineErrorNaming(kBenchmark + " --controllers sdlqr", "--out");
   expectOneLineErrorNaming(kBenchmark + out + " --jobs 0", "--jobs");
   expectOneLineErrorNaming(out.substr(1), "BENCHMARK");
-  ASSERT_EQ(std::system(("mkdir -p " + kWork).c_str()), 0);
-  const std::string bad = kWork + "/bad.yaml";
+  ASSERT_EQ(std::system(("mkdir -p " + kCliWork).c_str()), 0);
+  const std::string bad = kCliWork + "/bad.yaml";
   std::ofstream(bad) << "controllers: [sdlqr, lqg]\nexperiments: [hover_jumps]\n";
   expectOneLineErrorNaming(bad + out, "controllers[1]");
   std::ofstream(bad) << "experiments: [hover_jumps]\nspeed_sweeps: {}\n";
   expectOneLineErrorNaming(bad + out, "speed_sweeps");
-  EXPECT_EQ(std::system(("rm -rf " + kWork).c_str()), 0);
+  EXPECT_EQ(std::system(("rm -rf " + kCliWork).c_str()), 0);
 }
 
 TEST(CompareCli, WritesTheReportOfTheSelectedFlights) {
-  const std::string dir = kWork + "/selected";
+  const std::string dir = kCliWork + "/selected";
   const Outcome o = run(kBenchmark + " --out " + dir + " --controllers geometric --scenarios short_hover --jobs 1");
   ASSERT_EQ(o.exit_code, 0) << o.output;
   EXPECT_NE(o.output.find("compare: [1/1] short_hover geometric:"), std::string::npos) << o.output;
@@ -74,7 +74,7 @@ TEST(CompareCli, WritesTheReportOfTheSelectedFlights) {
   EXPECT_NE(text.find("| `geometric` |"), std::string::npos);
   EXPECT_EQ(text.find("`sdlqr` |"), std::string::npos) << "not selected";
   EXPECT_EQ(text.find("speed_sweep"), std::string::npos) << "not selected";
-  EXPECT_EQ(std::system(("rm -rf " + kWork).c_str()), 0);
+  EXPECT_EQ(std::system(("rm -rf " + kCliWork).c_str()), 0);
 }
 
 }  // namespace

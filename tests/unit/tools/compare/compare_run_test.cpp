@@ -16,13 +16,15 @@
 #include "sdlqr/compare/compare_metrics.hpp"
 #include "sdlqr/compare/compare_report.hpp"
 #include "sdlqr/logger/csv.hpp"
+#include "compare_test_dir.hpp"
 
 namespace sdlqr::compare {
 namespace {
 
-const std::string kDir = SDLQR_SOURCE_DIR "/tests/unit/tools/compare";
+using test::kDir;
+
 // Of this process: ctest runs each test case in a process of its own, several at once.
-const std::string kWork = SDLQR_BINARY_DIR "/compare_run_test/" + std::to_string(::getpid());
+const std::string kRunWork = SDLQR_BINARY_DIR "/compare_run_test/" + std::to_string(::getpid());
 
 std::string fileText(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -34,7 +36,7 @@ std::string fileText(const std::string& path) {
 
 class RemoveWorkFolder : public ::testing::Environment {
  public:
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + kWork + "'").c_str()), 0); }
+  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + kRunWork + "'").c_str()), 0); }
 };
 const auto* const kRemoveWorkFolder = ::testing::AddGlobalTestEnvironment(new RemoveWorkFolder);
 
@@ -50,7 +52,7 @@ class SmallComparison : public ::testing::Test {
   static void SetUpTestSuite() {
     benchmark_ = new Benchmark(Benchmark::load(kDir + "/small_benchmark.yaml"));
     result_ = new CompareResult(runQuietly(*benchmark_, 1));
-    writeCompareFiles(*benchmark_, *result_, kWork + "/jobs1");
+    writeCompareFiles(*benchmark_, *result_, kRunWork + "/jobs1");
   }
   static void TearDownTestSuite() {
     delete benchmark_;
@@ -89,17 +91,17 @@ TEST_F(SmallComparison, EveryControllerFliesEveryExperimentAndTheSlowSweepPasses
 
 TEST_F(SmallComparison, TheSameFilesBitForBitOnTwoThreads) {
   const CompareResult again = runQuietly(*benchmark_, 2);
-  writeCompareFiles(*benchmark_, again, kWork + "/jobs2");
+  writeCompareFiles(*benchmark_, again, kRunWork + "/jobs2");
   for (const std::string file : {"report.md", "flights.csv", "sweep.csv", "tracks/short_hover.csv",
                                  "tracks/short_circle.csv", "tracks/short_circle.path.csv"}) {
-    const std::string first = fileText(kWork + "/jobs1/" + file);
+    const std::string first = fileText(kRunWork + "/jobs1/" + file);
     EXPECT_GT(first.size(), 100u) << file;
-    EXPECT_EQ(first, fileText(kWork + "/jobs2/" + file)) << file;
+    EXPECT_EQ(first, fileText(kRunWork + "/jobs2/" + file)) << file;
   }
 }
 
 TEST_F(SmallComparison, FlightsCsvReadsBackToTheMetricsExactly) {
-  std::istringstream in(fileText(kWork + "/jobs1/flights.csv"));
+  std::istringstream in(fileText(kRunWork + "/jobs1/flights.csv"));
   std::vector<std::string> header, cells;
   std::string error;
   ASSERT_TRUE(logger::readCsvRecord(in, &header, &error)) << error;
@@ -122,7 +124,7 @@ TEST_F(SmallComparison, FlightsCsvReadsBackToTheMetricsExactly) {
 }
 
 TEST_F(SmallComparison, TheReportHasEveryTable) {
-  const std::string report = fileText(kWork + "/jobs1/report.md");
+  const std::string report = fileText(kRunWork + "/jobs1/report.md");
   for (const std::string part : {"## Summary", "## speed_sweep: short_circle", "## short_hover", "## short_circle",
                                  "path_error_rms_max [m]",
                                  "## Where sdlqr is not the best", "| `sdlqr` |", "| `geometric` |",
@@ -134,7 +136,7 @@ TEST_F(SmallComparison, TheReportHasEveryTable) {
   const std::string hover_table = report.substr(hover, report.find("## short_circle") - hover);
   EXPECT_EQ(hover_table.find("recovery_level_time"), std::string::npos);
   EXPECT_EQ(hover_table.find("path_error_rms_max"), std::string::npos);
-  EXPECT_FALSE(std::ifstream(kWork + "/jobs1/tracks/short_hover.path.csv").good()) << "no upload, no path file";
+  EXPECT_FALSE(std::ifstream(kRunWork + "/jobs1/tracks/short_hover.path.csv").good()) << "no upload, no path file";
 }
 
 // The negative: a speed known to be beyond the path criteria (measured 2026-12-02: path error RMS

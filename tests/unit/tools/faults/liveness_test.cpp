@@ -11,8 +11,9 @@
 namespace sdlqr::faults {
 namespace {
 
-constexpr int64_t kWall0 = 1'700'000'000'000'000;
-int64_t wall(double t) { return kWall0 + static_cast<int64_t>(std::llround(t * 1e6)); }
+// Simulation time t [s] is received at wall time kLivenessWall0 + t.
+constexpr int64_t kLivenessWall0 = 1'700'000'000'000'000;
+int64_t livenessWall(double t) { return kLivenessWall0 + static_cast<int64_t>(std::llround(t * 1e6)); }
 
 void beat(logger::FlightLog& log, const std::string& process, int32_t pid, int64_t seq, double t,
           int8_t state = 1) {
@@ -22,7 +23,7 @@ void beat(logger::FlightLog& log, const std::string& process, int32_t pid, int64
   hb.seq = seq;
   hb.state = state;
   log.heartbeat.messages.push_back(hb);
-  log.heartbeat.receive_utime.push_back(wall(t));
+  log.heartbeat.receive_utime.push_back(livenessWall(t));
 }
 
 // `process` beats once a second from 0 s until `last_beat`; the recorder hears the simulator
@@ -32,7 +33,7 @@ logger::FlightLog flight(double last_beat, double end) {
   for (int i = 0; i <= static_cast<int>(end); ++i) beat(log, "sdlqr-sim", 100, i, i);
   for (int i = 0; i <= static_cast<int>(last_beat); ++i) beat(log, "sdlqr-controller", 200, i, i + 0.5);
   log.sim_truth.messages.push_back(SimTruth{});
-  log.sim_truth.receive_utime.push_back(wall(end));
+  log.sim_truth.receive_utime.push_back(livenessWall(end));
   return log;
 }
 
@@ -45,7 +46,7 @@ const Finding* findingAbout(const std::vector<Finding>& findings, const std::str
 
 TEST(Liveness, AProcessThatBeatsToTheEndPasses) {
   const Liveness l = measureLiveness(flight(29.0, 30.0));
-  EXPECT_EQ(l.log_end_utime, wall(30.0));
+  EXPECT_EQ(l.log_end_utime, livenessWall(30.0));
   ASSERT_EQ(l.processes.size(), 2u);
   EXPECT_EQ(l.processes[0].process, "sdlqr-controller");
   EXPECT_EQ(l.processes[0].beats, 30);
