@@ -15,7 +15,7 @@ for _ in $(seq 100); do pgrep -P "$launcher" -f "bin/sdlqr-sim" >/dev/null && br
 sleep 2
 # Only this launcher's children: other tests may fly their own stacks at the same time.
 children=$(pgrep -P "$launcher" | tr '\n' ' ')
-victim=$(pgrep -P "$launcher" -f "bin/sdlqr-controller" | head -1)
+victim=$(pgrep -n -P "$launcher" -f "bin/sdlqr-controller")
 [ -n "$victim" ] || { echo "controller not running"; cat "$work/launch.out"; exit 1; }
 kill -9 "$victim"
 start_ms=$(date +%s%3N)

@@ -14,10 +14,14 @@ rm -rf "$work"
 mkdir -p "$work"
 
 # Every process of both vehicles and the ground logger alive in sdlqr-top's last report (TOP_FILE).
+# The last report is read whole by one awk: a `tac | awk '... exit' | grep -q` pipeline failed under
+# pipefail whenever a reader quit early and its writer died of SIGPIPE (exit 141), naming processes
+# that the very report showed alive.
 top_shows_everyone() {  # TOP_FILE
-  local missing=0 name
+  local missing=0 name last_report
+  last_report=$(awk '/^PROCESS/ {report = ""; next} {report = report $0 "\n"} END {printf "%s", report}' "$1")
   for name in sdlqr-logger QUAD{1,2}/sdlqr-{estimator,gains,controller,lowlevel,mission,sim}; do
-    tac "$1" | awk '/^PROCESS/ {exit} {print}' | grep -qE "^$name +alive" || { echo "sdlqr-top: $name not alive"; missing=1; }
+    grep -qE "^$name +alive" <<< "$last_report" || { echo "sdlqr-top: $name not alive"; missing=1; }
   done
   return "$missing"
 }
