@@ -8,15 +8,11 @@
 
 namespace sdlqr::logger {
 
-namespace {
-constexpr const char* kProgram = kLoggerProgram;
-}  // namespace
-
 int runExportCommand(int argc, const char* const* argv) {
   std::vector<std::string> positional;
   std::string out;
   double period_s = 0.01;
-  sdlqr::ArgParser parser(std::string(kProgram) + " export",
+  sdlqr::ArgParser parser(std::string(kLoggerProgram) + " export",
                           "Writes one CSV per channel (header: field names and units from lcmtypes/*.lcm; numbers\n"
                           "round-trip exactly) and metrics.json (rates, gaps, losses, pacing, GAINS solve times,\n"
                           "RATE_CMD jitter, last HEARTBEAT per process) from an LCM event log.");
@@ -36,17 +32,17 @@ int runExportCommand(int argc, const char* const* argv) {
   options.out_dir = out;
   options.metrics.rate_command_period_s = period_s;
   options.progress = [](int percent, int64_t events) {
-    std::cerr << kProgram << " export: " << percent << "% (" << events << " events)" << std::endl;
+    std::cerr << kLoggerProgram << " export: " << percent << "% (" << events << " events)" << std::endl;
   };
   const ExportResult result = exportLog(options);
   const LogFileStatus& log = result.log;
   if (log.truncated_tail_bytes > 0) {
-    std::cerr << kProgram << " export: warning: '" << log.path << "' ends in a truncated event: "
+    std::cerr << kLoggerProgram << " export: warning: '" << log.path << "' ends in a truncated event: "
               << log.truncated_tail_bytes << " bytes after byte " << log.readable_bytes
               << " unreadable (recorder killed?); exported the " << log.events << " readable events" << std::endl;
   }
   if (log.skipped_bytes > 0) {
-    std::cerr << kProgram << " export: warning: '" << log.path << "' is damaged: skipped " << log.skipped_bytes
+    std::cerr << kLoggerProgram << " export: warning: '" << log.path << "' is damaged: skipped " << log.skipped_bytes
               << " bytes between events" << std::endl;
   }
   for (const ExportedChannel& c : result.channels) {

@@ -13,8 +13,6 @@ namespace sdlqr::logger {
 
 namespace {
 
-constexpr const char* kProgram = kLoggerProgram;
-
 // LCM anchors a subscription pattern as ^pattern$ and compiles it as a POSIX extended regex.
 void checkChannelRegex(const std::string& pattern) {
   regex_t compiled;
@@ -64,7 +62,7 @@ RecordCommand parseRecordCommand(int argc, const char* const* argv) {
   std::string& scenario = command.scenario;
   std::string channels;
   double& duration_s = command.duration_s;
-  sdlqr::ArgParser parser(std::string(kProgram) + " [record]",
+  sdlqr::ArgParser parser(std::string(kLoggerProgram) + " [record]",
                           "Records every LCM channel (or those matching --channels) to a standard LCM event log,\n"
                           "readable by lcm-logplayer. Flushes at least every 0.2 s; stops on SIGINT/SIGTERM or\n"
                           "after --duration, with everything written. Never overwrites a file.");
@@ -90,10 +88,10 @@ RecordCommand parseRecordCommand(int argc, const char* const* argv) {
 }
 
 int reportRecording(const RecorderStats& s, const std::string& path) {
-  std::cout << kProgram << ": wrote " << s.written << " messages (" << s.bytes_written << " bytes) to " << path
+  std::cout << kLoggerProgram << ": wrote " << s.written << " messages (" << s.bytes_written << " bytes) to " << path
             << "; dropped " << s.dropped << ", write errors " << s.write_errors << std::endl;
   if (s.write_errors == 0) return 0;
-  std::cerr << kProgram << ": " << s.last_error << "\n";
+  std::cerr << kLoggerProgram << ": " << s.last_error << "\n";
   return 1;
 }
 

@@ -20,7 +20,6 @@ using SegmentVector = Eigen::Matrix<Real, kCoefficientCount, 1>;
 using RealMatrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
 using RealVector = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
 constexpr int kSnapOrder = 4;
-constexpr double kPi = 3.14159265358979323846;
 
 // Maps c (normalized time) to the end derivatives d^k p/dtau^k, k = 0..4 at tau = 0 then tau = 1.
 SegmentMatrix normalizedEndDerivativeMap() {
@@ -73,7 +72,7 @@ std::string indexed(const char* name, std::size_t i) {
   return s.str();
 }
 
-double wrapToPi(double angle) { return angle - 2.0 * kPi * std::floor((angle + kPi) / (2.0 * kPi)); }
+double wrapToPi(double angle) { return angle - 2.0 * M_PI * std::floor((angle + M_PI) / (2.0 * M_PI)); }
 
 // Index into the node-derivative vector of local end derivative `local` (0..9) of a segment.
 int globalIndex(int nodes, int segment, int local) {

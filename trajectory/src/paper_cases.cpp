@@ -7,7 +7,6 @@
 namespace sdlqr::trajectory {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kEllipseRadii[3] = {1.5, 1.2, 0.5};  // [m] r_x, r_y, r_z of §III-C.3
 }  // namespace
 
@@ -51,7 +50,7 @@ Vec3 paperEllipsePoint(double alpha, double height_offset) {
 
 Trajectory paperEllipse(const TrajectoryParams& params, double gravity) {
   const int n = params.ellipse_samples;
-  auto point = [&](int k) { return paperEllipsePoint(2.0 * kPi * (k % n) / n, params.height_offset); };
+  auto point = [&](int k) { return paperEllipsePoint(2.0 * M_PI * (k % n) / n, params.height_offset); };
   const Quat level = quat::fromYaw(params.yaw);
   const Input hover = makeInput(Vec3::Zero(), gravity);
 

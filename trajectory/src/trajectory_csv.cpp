@@ -8,6 +8,8 @@
 #include <ostream>
 #include <vector>
 
+#include "text_fields.hpp"
+
 namespace sdlqr::trajectory {
 
 namespace {
@@ -15,19 +17,12 @@ namespace {
 const char* const kColumnNames[kCsvColumns] = {"t",  "px", "py", "pz", "qw", "qx", "qy", "qz",
                                                "vx", "vy", "vz", "wx", "wy", "wz", "c"};
 
-std::string trim(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return {};
-  const auto last = text.find_last_not_of(" \t\r");
-  return text.substr(first, last - first + 1);
-}
-
 std::vector<std::string> splitFields(const std::string& line) {
   std::vector<std::string> fields;
   std::size_t start = 0;
   while (true) {
     const auto comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+    fields.push_back(detail::trimBlanks(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
     if (comma == std::string::npos) return fields;
     start = comma + 1;
   }
@@ -35,11 +30,11 @@ std::vector<std::string> splitFields(const std::string& line) {
 
 // "# key: value" comment lines that set a Trajectory flag; other comments are ignored.
 void readDirective(const std::string& comment, const std::string& name, int line, Trajectory& out) {
-  const std::string body = trim(comment.substr(1));
+  const std::string body = detail::trimBlanks(comment.substr(1));
   const auto colon = body.find(':');
   if (colon == std::string::npos) return;
-  const std::string key = trim(body.substr(0, colon));
-  const std::string value = trim(body.substr(colon + 1));
+  const std::string key = detail::trimBlanks(body.substr(0, colon));
+  const std::string value = detail::trimBlanks(body.substr(colon + 1));
   if (key == "closed") {
     if (value == "true") out.closed = true;
     else if (value == "false") out.closed = false;
@@ -83,7 +78,7 @@ Trajectory parseTrajectoryCsv(std::istream& in, const std::string& name, const S
   bool header_allowed = true;
   while (std::getline(in, text)) {
     ++line;
-    const std::string trimmed = trim(text);
+    const std::string trimmed = detail::trimBlanks(text);
     if (trimmed.empty()) continue;
     if (trimmed[0] == '#') {
       readDirective(trimmed, name, line, out);

@@ -7,19 +7,14 @@
 
 #include "sdlqr/trajectory/trajectory_csv.hpp"
 
+#include "text_fields.hpp"
+
 namespace sdlqr::trajectory {
 
 namespace {
 
-std::string trim(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return {};
-  const auto last = text.find_last_not_of(" \t\r");
-  return text.substr(first, last - first + 1);
-}
-
 bool parseFinite(const std::string& text, double& out) {
-  const std::string field = trim(text);
+  const std::string field = detail::trimBlanks(text);
   if (field.empty()) return false;
   char* end = nullptr;
   out = std::strtod(field.c_str(), &end);
@@ -86,7 +81,7 @@ std::vector<Waypoint> parseWaypointCsv(std::istream& in, const std::string& name
   bool header_allowed = true;
   while (std::getline(in, text)) {
     ++line;
-    const std::string trimmed = trim(text);
+    const std::string trimmed = detail::trimBlanks(text);
     if (trimmed.empty() || trimmed[0] == '#') continue;
     if (header_allowed && (trimmed[0] == 'x' || trimmed[0] == 'X')) {
       header_allowed = false;
@@ -100,7 +95,7 @@ std::vector<Waypoint> parseWaypointCsv(std::istream& in, const std::string& name
       double value = 0.0;
       const std::string field = trimmed.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
       if (!parseFinite(field, value)) {
-        throw TrajectoryFileError(name, line, "cannot parse '" + trim(field) + "' as a finite number");
+        throw TrajectoryFileError(name, line, "cannot parse '" + detail::trimBlanks(field) + "' as a finite number");
       }
       values.push_back(value);
       if (comma == std::string::npos) break;

@@ -10,7 +10,7 @@ namespace sdlqr::analysis {
 
 namespace {
 
-double seconds(int64_t utime) { return static_cast<double>(utime) * 1e-6; }
+using detail::seconds;
 
 bool tracked(const Reference& r, int64_t seq) {
   return r.trajectory_seq == seq && (r.mode == ReferenceMode::kSpatial || r.mode == ReferenceMode::kTemporal);

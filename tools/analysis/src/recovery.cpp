@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "flight_parts.hpp"
 #include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::analysis {
@@ -12,7 +13,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-double seconds(int64_t utime) { return 1e-6 * static_cast<double>(utime); }
+using detail::seconds;
 
 // First time of a command of `type` at or after t [s]; NaN when none.
 double firstCommand(const logger::FlightLog& log, CommandType type, double t) {

@@ -14,6 +14,8 @@
 
 #include "sdlqr/logger/csv.hpp"
 
+#include "file_text.hpp"
+
 namespace sdlqr::batch {
 
 void makeDirectories(const std::string& dir) {
@@ -46,13 +48,6 @@ std::vector<std::vector<std::string>> records(const std::string& text, const std
   while (logger::readCsvRecord(in, &cells, &error)) out.push_back(cells);
   if (!error.empty() && !drop_cut_tail) throw std::runtime_error(path + ": " + error);
   return out;
-}
-
-std::string fileText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 bool exists(const std::string& path) {
@@ -126,7 +121,7 @@ void writeTable(const Table& table, const std::string& path) {
 
 Table readTable(const std::string& path) {
   if (!exists(path)) throw std::runtime_error(path + ": no such file");
-  auto rows = records(fileText(path), path, false);
+  auto rows = records(detail::fileText(path), path, false);
   if (rows.empty()) throw std::runtime_error(path + ": empty (no header)");
   Table t;
   t.header = rows.front();
@@ -149,7 +144,7 @@ Journal::Journal(const std::string& dir, const BatchContext& context, const Shar
   }
   writeBatchInfo(dir, context, shard);
   // Rows that landed whole; a row a kill cut short (no line end, or fewer cells) is dropped.
-  const std::string old = exists(path_) ? fileText(path_) : std::string();
+  const std::string old = exists(path_) ? detail::fileText(path_) : std::string();
   std::string kept = headerLine(header_);
   if (!old.empty()) {
     const size_t end = old.rfind('\n');

@@ -8,6 +8,8 @@
 
 #include "sdlqr/math/lqr_params.hpp"
 
+#include "file_text.hpp"
+
 namespace sdlqr::batch {
 
 namespace {
@@ -36,13 +38,6 @@ bool isFile(const std::string& path) {
 std::string directoryOf(const std::string& path) {
   const auto slash = path.find_last_of('/');
   return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
-}
-
-std::string fileText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 std::string fnv1a(const std::string& text) {
@@ -215,7 +210,8 @@ BatchSpec BatchSpec::load(const std::string& path) {
     }
   }
   const mission::Scenario loaded = mission::Scenario::load(spec.scenario_path);
-  spec.fingerprint = fnv1a(fileText(path) + '\0' + fileText(spec.scenario_path) + '\0' + fileText(loaded.vehicle_path));
+  spec.fingerprint = fnv1a(detail::fileText(path) + '\0' + detail::fileText(spec.scenario_path) + '\0' +
+                           detail::fileText(loaded.vehicle_path));
   return spec;
 }
 
