@@ -13,22 +13,11 @@
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
 
+#include "node_checks.hpp"
+
 using namespace sdlqr;
-
-namespace {
-
-int failures = 0;
-void check(bool ok, const std::string& what) {
-  std::printf("%s: %s\n", ok ? "ok" : "FAIL", what.c_str());
-  if (!ok) ++failures;
-}
-
-void spinFor(bus::Node& node, double seconds) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < end) node.spin(5);
-}
-
-}  // namespace
+using test::check;
+using test::spinFor;
 
 int main() {
   const std::string base = "udpm://239.255.76.67:7667?ttl=0";
@@ -145,6 +134,6 @@ int main() {
           "every message the unread socket lost counts as bus.kernel_dropped: heard " + std::to_string(heard) +
               " + kernel_dropped " + std::to_string(kernel_dropped) + " = " + std::to_string(kSent));
   }
-  std::printf("%s\n", failures == 0 ? "PASS" : "FAIL");
-  return failures == 0 ? 0 : 1;
+  std::printf("%s\n", test::failedChecks() == 0 ? "PASS" : "FAIL");
+  return test::failedChecks() == 0 ? 0 : 1;
 }

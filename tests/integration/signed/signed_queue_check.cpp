@@ -12,20 +12,13 @@
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
 
+#include "node_checks.hpp"
+
 using namespace sdlqr;
+using test::check;
+using test::spinFor;
 
 namespace {
-
-int failures = 0;
-void check(bool ok, const std::string& what) {
-  std::printf("%s: %s\n", ok ? "ok" : "FAIL", what.c_str());
-  if (!ok) ++failures;
-}
-
-void spinFor(bus::Node& node, double seconds) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < end) node.spin(5);
-}
 
 std::vector<uint8_t> encoded(int64_t seq) {
   RateCommand command;
@@ -78,6 +71,6 @@ int main() {
   spinFor(node, 0.3);
   check(handled == std::vector<int64_t>{2}, "of two signed ones waiting, a capacity-1 queue takes the first");
   check(node.health().counter("queue_drop.RATE_CMD") == 1, "and drops the second (queue_drop.RATE_CMD)");
-  std::printf("%s\n", failures == 0 ? "PASS" : "FAILED");
-  return failures == 0 ? 0 : 1;
+  std::printf("%s\n", test::failedChecks() == 0 ? "PASS" : "FAILED");
+  return test::failedChecks() == 0 ? 0 : 1;
 }

@@ -1,6 +1,8 @@
 #include "sdlqr/inspect/bus_monitor.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 
 namespace sdlqr::inspect {
 
@@ -67,15 +69,23 @@ std::string formatReport(const BusReport& report) {
     text += line;
   }
   text += "\n";
-  std::snprintf(line, sizeof line, "%-20s %-8s %-9s %7s %6s %10s %10s %7s %7s %6s  %s\n", "PROCESS", "HEALTH", "STATE",
-                "PID", "CPU[%]", "RECEIVED", "PUBLISHED", "DROPPED", "REJECT", "ERRORS", "LAST ERROR");
-  text += line;
+  // The process column is as wide as its longest name: a vehicle prefix (QUAD1/sdlqr-controller)
+  // would otherwise push that row's columns out of line with the header.
+  std::vector<std::string> names;
+  int name_width = 20;
   for (const ProcessRow& p : report.processes) {
-    const logger::HeartbeatRecord& h = p.heartbeat;
     const std::string prefix = p.channel.size() > 9 ? p.channel.substr(0, p.channel.size() - 9) : "";
-    const std::string name = prefix + h.process;
-    std::snprintf(line, sizeof line, "%-20s %-8s %-9s %7d %6.1f %10lld %10lld %7lld %7lld %6lld  %s\n",
-                  name.c_str(), p.alive ? "alive" : h.state == 4 ? "stopped" : "SILENT",
+    names.push_back(prefix + p.heartbeat.process);
+    name_width = std::max(name_width, static_cast<int>(names.back().size()));
+  }
+  std::snprintf(line, sizeof line, "%-*s %-8s %-9s %7s %6s %10s %10s %7s %7s %6s  %s\n", name_width, "PROCESS", "HEALTH",
+                "STATE", "PID", "CPU[%]", "RECEIVED", "PUBLISHED", "DROPPED", "REJECT", "ERRORS", "LAST ERROR");
+  text += line;
+  for (size_t i = 0; i < report.processes.size(); ++i) {
+    const ProcessRow& p = report.processes[i];
+    const logger::HeartbeatRecord& h = p.heartbeat;
+    std::snprintf(line, sizeof line, "%-*s %-8s %-9s %7d %6.1f %10lld %10lld %7lld %7lld %6lld  %s\n", name_width,
+                  names[i].c_str(), p.alive ? "alive" : h.state == 4 ? "stopped" : "SILENT",
                   logger::processStateName(h.state).c_str(), h.pid, h.cpu_percent,
                   static_cast<long long>(h.received), static_cast<long long>(h.published),
                   static_cast<long long>(h.dropped), static_cast<long long>(h.rejected),

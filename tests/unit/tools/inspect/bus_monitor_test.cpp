@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <sstream>
 
 #include "sdlqr/inspect/bus_monitor.hpp"
 
@@ -72,6 +73,25 @@ TEST(BusMonitor, ProcessIsAliveUntilSilentOrStopping) {
   EXPECT_NE(text.find("QUAD1/sdlqr-gains"), std::string::npos);
   EXPECT_NE(text.find("stopped"), std::string::npos);
   EXPECT_NE(text.find("SILENT"), std::string::npos);
+}
+
+// A name longer than the default column (a vehicle prefix) widens the column for every row, so
+// each row's HEALTH stays under the header's.
+TEST(BusMonitor, LongProcessNamesKeepTheColumnsInLine) {
+  BusMonitor monitor;
+  monitor.onHeartbeat("QUAD1/HEARTBEAT", heartbeat("sdlqr-controller", 1), kT0);
+  monitor.onHeartbeat("HEARTBEAT", heartbeat("sdlqr-sim", 1), kT0);
+  const std::string text = formatReport(monitor.report(kT0 + 100'000));
+  std::istringstream lines(text.substr(text.find("PROCESS")));
+  std::string line;
+  std::getline(lines, line);
+  const size_t health_column = line.find("HEALTH");
+  int rows = 0;
+  while (std::getline(lines, line)) {
+    EXPECT_EQ(line.find("alive"), health_column) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 2);
 }
 
 }  // namespace
