@@ -5,10 +5,12 @@
 // of the reference log received more than a margin before the kill.
 //
 //   export_roundtrip_check LOG CSV_DIR
-//   export_roundtrip_check --prefix-of LOG KILLED_LOG --before UTIME
+//   export_roundtrip_check --prefix-of LOG KILLED_LOG --before UTIME [--killed-pid PID]
+//   export_roundtrip_check --reorder-heartbeats LOG OUT   (LOG with each two HEARTBEATs swapped)
 //
 // Prints the counts it compared; exit code 1 on any mismatch.
 
+#include <lcm/eventlog.h>
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdlib>
@@ -17,6 +19,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -130,28 +133,27 @@ int64_t lostByProcess(const std::string& path, int32_t pid) {
 }
 
 // Every event of `reference` received before `before_utime` is in `killed`, byte for byte, but
-// for at most `allowed_missing`.
+// for at most `allowed_missing`. Matched as a multiset per channel, not in order: two senders'
+// datagrams on one channel (every process's HEARTBEAT) can reach two receiving sockets in
+// opposite orders, as each CPU's loopback backlog delivers its own datagram to every socket.
 int checkPrefix(const std::string& reference_path, const std::string& killed_path, int64_t before_utime,
                 int64_t allowed_missing) {
-  std::map<std::string, std::vector<std::vector<uint8_t>>> killed;
+  std::map<std::pair<std::string, std::vector<uint8_t>>, int64_t> unmatched;  // (channel, bytes) -> copies
   int64_t killed_events = 0;
   for (RecordedEvent& e : readAll(killed_path)) {
-    killed[e.channel].push_back(std::move(e.bytes));
+    ++unmatched[{e.channel, std::move(e.bytes)}];
     ++killed_events;
   }
   int64_t expected = 0, missing = 0;
-  std::map<std::string, size_t> position;  // per channel: messages arrive in order on each
   for (const RecordedEvent& e : readAll(reference_path)) {
     if (e.receive_utime >= before_utime) continue;
     ++expected;
-    std::vector<std::vector<uint8_t>>& candidates = killed[e.channel];
-    size_t& at = position[e.channel];
-    while (at < candidates.size() && candidates[at] != e.bytes) ++at;
-    if (at == candidates.size()) {
+    const auto found = unmatched.find({e.channel, e.bytes});
+    if (found == unmatched.end() || found->second == 0) {
       if (missing++ < 5) std::cout << "FAIL missing " << e.channel << " received at " << e.receive_utime << "\n";
       continue;
     }
-    ++at;
+    --found->second;
   }
   std::cout << "[ figures ] killed log holds " << killed_events << " events; " << expected - missing << " of "
             << expected << " events received before " << before_utime << " found; the killed recorder lost "
@@ -159,11 +161,40 @@ int checkPrefix(const std::string& reference_path, const std::string& killed_pat
   return missing <= allowed_missing && expected > 0 ? 0 : 1;
 }
 
+// `in` rewritten to `out` with each two consecutive HEARTBEAT events in the opposite order, as
+// another receiving socket may have seen them.
+int writeReorderedHeartbeats(const std::string& in, const std::string& out) {
+  std::vector<RecordedEvent> events = readAll(in);
+  std::vector<size_t> heartbeats;
+  for (size_t i = 0; i < events.size(); ++i) {
+    if (events[i].channel == "HEARTBEAT") heartbeats.push_back(i);
+  }
+  for (size_t h = 0; h + 1 < heartbeats.size(); h += 2) std::swap(events[heartbeats[h]], events[heartbeats[h + 1]]);
+  lcm_eventlog_t* log = lcm_eventlog_create(out.c_str(), "w");
+  if (!log) throw std::runtime_error("cannot create '" + out + "'");
+  int failures = 0;
+  for (RecordedEvent& e : events) {
+    lcm_eventlog_event_t record{};
+    record.timestamp = e.receive_utime;
+    record.channellen = static_cast<int32_t>(e.channel.size());
+    record.datalen = static_cast<int32_t>(e.bytes.size());
+    record.channel = e.channel.data();
+    record.data = e.bytes.data();
+    failures += lcm_eventlog_write_event(log, &record) != 0;
+  }
+  lcm_eventlog_destroy(log);
+  std::cout << "[ figures ] " << heartbeats.size() / 2 << " pairs of HEARTBEATs swapped\n";
+  return failures == 0 ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   try {
     if (argc == 3) return checkExport(argv[1], argv[2]);
+    if (argc == 4 && std::strcmp(argv[1], "--reorder-heartbeats") == 0) {
+      return writeReorderedHeartbeats(argv[2], argv[3]);
+    }
     const bool prefix = (argc == 6 || argc == 8) && std::strcmp(argv[1], "--prefix-of") == 0 &&
                         std::strcmp(argv[4], "--before") == 0;
     if (prefix && (argc == 6 || std::strcmp(argv[6], "--killed-pid") == 0)) {
@@ -174,6 +205,7 @@ int main(int argc, char** argv) {
     std::cerr << "export_roundtrip_check: " << e.what() << "\n";
     return 2;
   }
-  std::cerr << "usage: export_roundtrip_check LOG CSV_DIR | --prefix-of LOG KILLED_LOG --before UTIME [--killed-pid PID]\n";
+  std::cerr << "usage: export_roundtrip_check LOG CSV_DIR | --prefix-of LOG KILLED_LOG --before UTIME [--killed-pid PID]"
+               " | --reorder-heartbeats LOG OUT\n";
   return 2;
 }
