@@ -1,5 +1,8 @@
 #include "sdlqr/replay/flight_loader.hpp"
 
+#include <algorithm>
+#include <numeric>
+
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/decode.hpp"
 #include "sdlqr/logger/channel_types.hpp"
@@ -42,6 +45,21 @@ void appendInput(const logger::LogEvent& event, const std::string& base, InputKi
   flight.order.push_back({kind, static_cast<int32_t>(series.size() - 1)});
 }
 
+// The recorder reads each port of the split bus on a socket of its own and, after a stall,
+// writes one socket's backlog before another's: the log order is the order it handled them, the
+// event's time the kernel's receive time. The inputs are replayed in the latter (stable: on one
+// socket, and at equal times, log order), the order the processes on the bus received them in.
+void orderByReceiveTime(RecordedFlight& flight, const std::vector<int64_t>& receive_utime) {
+  std::vector<std::size_t> by_time(flight.order.size());
+  std::iota(by_time.begin(), by_time.end(), std::size_t{0});
+  std::stable_sort(by_time.begin(), by_time.end(),
+                   [&](std::size_t a, std::size_t b) { return receive_utime[a] < receive_utime[b]; });
+  std::vector<LogPosition> order;
+  order.reserve(by_time.size());
+  for (std::size_t i : by_time) order.push_back(flight.order[i]);
+  flight.order = std::move(order);
+}
+
 }  // namespace
 
 RecordedFlight loadRecordedFlight(const std::string& path, const std::string& vehicle, LoadStats* stats) {
@@ -49,6 +67,7 @@ RecordedFlight loadRecordedFlight(const std::string& path, const std::string& ve
   RecordedFlight flight;
   logger::LogReader reader(path);
   logger::LogEvent event;
+  std::vector<int64_t> receive_utime;  // of each entry of flight.order
   while (reader.next(&event)) {
     ++stats->events;
     const logger::ChannelName name = logger::splitChannel(event.channel);
@@ -71,7 +90,9 @@ RecordedFlight loadRecordedFlight(const std::string& path, const std::string& ve
       case logger::MessageType::kGains: appendInput(event, name.base, InputKind::kGains, flight.gains, flight, stats); break;
       default: break;
     }
+    receive_utime.resize(flight.order.size(), event.receive_utime);
   }
+  orderByReceiveTime(flight, receive_utime);
   stats->complete = reader.status().complete();
   return flight;
 }

@@ -1,7 +1,7 @@
 #pragma once
 // A recorded flight as the replay needs it: the inputs of the estimator, the gain solver and the
 // controller (IMU, VIO_POSE, COMMAND, TRAJECTORY, PARAMS) and the recorded STATE_EST in the order
-// the recorder heard them, plus the recorded outputs (STATE_EST, RATE_CMD, REFERENCE, GAINS) to
+// the recorder received them, plus the recorded outputs (STATE_EST, RATE_CMD, REFERENCE, GAINS) to
 // take the pairing from and to compare with. Plain structs, no LCM.
 
 #include <cstdint>
@@ -30,7 +30,8 @@ struct LogPosition {
 };
 
 struct RecordedFlight {
-  std::vector<LogPosition> order;  // every message below but RATE_CMD and REFERENCE, in log order
+  // Every message below but RATE_CMD and REFERENCE, in the order the recorder received them.
+  std::vector<LogPosition> order;
 
   std::vector<ImuSample> imu;
   std::vector<VioPose> vio_pose;
