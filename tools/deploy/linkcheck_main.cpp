@@ -67,16 +67,12 @@ bool checkGap(const logger::FlightLog& log, int64_t down, int64_t up) {
                 static_cast<long long>(gap.missing), static_cast<long long>(gap.missing_outside));
     ok = ok && channel_ok;
   }
-  int64_t failsafe_entries = -1;
-  for (const logger::HeartbeatRecord& hb : log.heartbeat.messages) {
-    if (hb.process != "sdlqr-lowlevel") continue;
-    for (const auto& [name, value] : hb.counters) {
-      if (name == "failsafe.entries") failsafe_entries = value;
-    }
-  }
-  const bool flew_on = failsafe_entries == 0;
-  std::cout << verdict(flew_on) << " the vehicle flew on: lowlevel failsafe entries " << failsafe_entries
-            << (failsafe_entries < 0 ? " (no lowlevel heartbeat)" : "") << "\n";
+  const deploy::FailsafeEntries failsafe = deploy::lowlevelFailsafeEntries(log.heartbeat, down, up);
+  const bool flew_on = failsafe.around_outage == 0;
+  std::cout << verdict(flew_on) << " the vehicle flew on: lowlevel failsafe entries " << failsafe.around_outage
+            << " from before the link went down to " << 1e-6 * deploy::kFailsafeSettleUs << " s after it came up"
+            << (failsafe.around_outage < 0 ? " (no lowlevel heartbeat on one side)" : "") << "; "
+            << failsafe.whole_flight << " over the whole flight\n";
   return ok && flew_on;
 }
 
@@ -95,7 +91,8 @@ int main(int argc, char** argv) {
                      "with --latency: fail unless the STATE_EST -> RATE_CMD median is at least US (an added delay\n"
                      "shows; the same log twice measures at one recorder)");
     parser.addOption("--gap", &gap_log, "LOG", "check that LOG's recorder missed the vehicle's fast channels while\n"
-                     "its link was down (--down), lost nothing else, and that the vehicle never entered failsafe");
+                     "its link was down (--down), lost nothing else, and that the vehicle did not enter failsafe\n"
+                     "from before the link went down to 1 s after it came up");
     parser.addOption("--down", &down_text, "DOWN_US,UP_US", "wall instants the link went down and up (deploy --events)");
     parser.addOption("--vehicle", &vehicle, "PREFIX", "channel prefix of the vehicle");
     parser.setEpilog("exit codes: 0 done / every check held, 1 a check failed, 2 bad option or log");

@@ -108,4 +108,32 @@ LinkGap measureLinkGap(const logger::ChannelTimeline& channel, int64_t down_us, 
   return gap;
 }
 
+namespace {
+
+int64_t failsafeEntriesOf(const HeartbeatRecord& heartbeat) {
+  for (const HeartbeatCounter& counter : heartbeat.counters) {
+    if (counter.name == "failsafe.entries") return counter.value;
+  }
+  return -1;
+}
+
+}  // namespace
+
+FailsafeEntries lowlevelFailsafeEntries(const logger::Series<HeartbeatRecord>& heartbeats, int64_t down_us,
+                                        int64_t up_us) {
+  int64_t before = -1, after = -1;
+  FailsafeEntries entries;
+  for (size_t i = 0; i < heartbeats.size(); ++i) {
+    if (heartbeats[i].process != "sdlqr-lowlevel") continue;
+    const int64_t count = failsafeEntriesOf(heartbeats[i]);
+    if (count < 0) continue;
+    const int64_t received = heartbeats.receive_utime[i];
+    if (received < down_us) before = count;
+    if (after < 0 && received >= up_us + kFailsafeSettleUs) after = count;
+    entries.whole_flight = count;
+  }
+  if (before >= 0 && after >= 0) entries.around_outage = after - before;
+  return entries;
+}
+
 }  // namespace sdlqr::deploy

@@ -110,5 +110,44 @@ TEST(LinkReport, LinkGapSeesTheSilenceAndLossElsewhere) {
   EXPECT_EQ(none.missing, 0);
 }
 
+// Lowlevel heartbeats once a second over [0, 10 s) whose failsafe.entries steps to 1 at
+// `entered_s` (never when negative); the ground recorder hears none while the link is down.
+logger::Series<HeartbeatRecord> lowlevelHeartbeats(double entered_s, int64_t down, int64_t up) {
+  logger::Series<HeartbeatRecord> series;
+  for (int s = 0; s < 10; ++s) {
+    const int64_t received = kWall0 + s * 1'000'000 + 3'000;
+    if (received > down && received < up) continue;
+    HeartbeatRecord hb;
+    hb.process = "sdlqr-lowlevel";
+    hb.counters.push_back({"failsafe.entries", entered_s >= 0.0 && s >= entered_s ? 1 : 0});
+    series.messages.push_back(hb);
+    series.receive_utime.push_back(received);
+    HeartbeatRecord other = hb;  // another process's counter of that name is not the lowlevel's
+    other.process = "sdlqr-estimator";
+    other.counters = {{"failsafe.entries", 7}};
+    series.messages.push_back(other);
+    series.receive_utime.push_back(received);
+  }
+  return series;
+}
+
+TEST(LinkReport, FailsafeEntriesAreJudgedAroundTheOutage) {
+  const int64_t down = kWall0 + 3'500'000, up = kWall0 + 5'500'000;
+  const FailsafeEntries none = lowlevelFailsafeEntries(lowlevelHeartbeats(-1, down, up), down, up);
+  EXPECT_EQ(none.around_outage, 0);
+  EXPECT_EQ(none.whole_flight, 0);
+  // Entered while the link was down: seen in the first heartbeat after it came up.
+  const FailsafeEntries during = lowlevelFailsafeEntries(lowlevelHeartbeats(4.5, down, up), down, up);
+  EXPECT_EQ(during.around_outage, 1);
+  // ... or just after (a reaction within the settle time).
+  EXPECT_EQ(lowlevelFailsafeEntries(lowlevelHeartbeats(6.0, down, up), down, up).around_outage, 1);
+  // Entered 3 s after the link came up: not the outage's, but counted over the flight.
+  const FailsafeEntries later = lowlevelFailsafeEntries(lowlevelHeartbeats(8.5, down, up), down, up);
+  EXPECT_EQ(later.around_outage, 0);
+  EXPECT_EQ(later.whole_flight, 1);
+  // Without a lowlevel heartbeat after the outage there is nothing to judge by.
+  EXPECT_EQ(lowlevelFailsafeEntries(lowlevelHeartbeats(-1, down, kWall0 + 20'000'000), down, up).around_outage, -1);
+}
+
 }  // namespace
 }  // namespace sdlqr::deploy

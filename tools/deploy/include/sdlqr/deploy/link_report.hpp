@@ -48,4 +48,16 @@ struct LinkGap {
 };
 LinkGap measureLinkGap(const logger::ChannelTimeline& channel, int64_t down_us, int64_t up_us);
 
+// The lowlevel's failsafe.entries (a running count in its HEARTBEAT) around an outage.
+struct FailsafeEntries {
+  // Entered from its last heartbeat received before the link went down to its first one received
+  // at least kFailsafeSettleUs after it came up: those the outage can have caused. -1 without
+  // either heartbeat.
+  int64_t around_outage = -1;
+  int64_t whole_flight = -1;  // by its last heartbeat; -1 without one
+};
+constexpr int64_t kFailsafeSettleUs = 1'000'000;  // [us] a heartbeat period: a reaction shows by then
+FailsafeEntries lowlevelFailsafeEntries(const logger::Series<HeartbeatRecord>& heartbeats, int64_t down_us,
+                                        int64_t up_us);
+
 }  // namespace sdlqr::deploy
