@@ -41,6 +41,10 @@ const ParamTable<ControllerParams>& ControllerParams::declaration() {
              "the landing reference continues this far below the ground");
     t.number("rejoin_height", &P::rejoin_height, 0.2, "m", Range::openClosed(0.0, 10.0),
              "a restarted controller seeing the vehicle this high rejoins in a hold");
+    t.number("recovery_tilt_deg", &P::recovery_tilt_deg, 10.0, "deg", Range::openClosed(0.0, 90.0),
+             "a rejoin levels and stops the vehicle before it holds: tilted at most this ...");
+    t.number("recovery_speed", &P::recovery_speed, 0.5, "m/s", Range::above(0.0),
+             "... and moving at most this, the hold is set where the vehicle is");
     t.choice("tracking", &P::tracking, ReferenceMode::kSpatial,
              {{"spatial", ReferenceMode::kSpatial}, {"temporal", ReferenceMode::kTemporal}},
              "reference scheme of trajectories that do not say (spatial or temporal)");

@@ -50,16 +50,19 @@ void ReferenceGenerator::handleCommand(const Command& command) {
       } else if (rejoined && phase_ == FlightPhase::kHold) {
         // The take-off this flight began with: its height above the ground is the held setpoint.
         setpoint_[2] = ground_z_ + takeoff_height;
+        recovery_keeps_height_ = true;
       }
       break;
     case CommandType::kGoto:
       if (flying) {
         tracker_.clear();
         hold(command.position, command.yaw);
+        recovering_ = false;
       }
       break;
     case CommandType::kLand:
       takeoff_pending_ = false;
+      recovering_ = false;
       if (flying) {
         tracker_.clear();
         phase_ = FlightPhase::kLanding;
@@ -72,6 +75,7 @@ void ReferenceGenerator::handleCommand(const Command& command) {
       break;
     case CommandType::kDisarm:
       takeoff_pending_ = false;
+      recovering_ = false;
       phase_ = FlightPhase::kIdle;
       break;
     case CommandType::kArm:
@@ -93,9 +97,22 @@ void ReferenceGenerator::rejoin(const StateEstimate& estimate) {
   // The ground plane z = 0 stands in for the take-off height this instance never saw.
   ground_z_ = 0.0;
   const double z = takeoff_pending_ ? ground_z_ + pending_takeoff_height_ : estimate.position[2];
+  recovery_keeps_height_ = takeoff_pending_;
   takeoff_pending_ = false;
   hold(Vec3(estimate.position[0], estimate.position[1], z), quat::yaw(estimate.orientation));
   rejoined_ = true;
+  recovering_ = true;
+}
+
+// Where the recovering vehicle is (nothing to chase but level and rest) until it is level and
+// stopped; from then the hold, set there.
+Vec3 ReferenceGenerator::recoveryReference(const StateEstimate& estimate) {
+  const bool level = quat::tilt(estimate.orientation) <= params_.recovery_tilt_deg * M_PI / 180.0;
+  if (!level || estimate.velocity.norm() > params_.recovery_speed) return estimate.position;
+  recovering_ = false;
+  setpoint_ = Vec3(estimate.position[0], estimate.position[1],
+                   recovery_keeps_height_ ? setpoint_[2] : estimate.position[2]);
+  return setpoint_;
 }
 
 void ReferenceGenerator::hold(const Vec3& position, double yaw) {
@@ -127,7 +144,7 @@ bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
       seen_estimate_ = true;
       if (first_estimate && estimate.position[2] > params_.rejoin_height) {
         rejoin(estimate);
-        position_ref = setpoint_;
+        position_ref = recoveryReference(estimate);
         break;
       }
       if (!takeoff_pending_) return false;
@@ -145,6 +162,7 @@ bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
       }
       break;
     case FlightPhase::kHold:
+      if (recovering_) position_ref = recoveryReference(estimate);
       break;
     case FlightPhase::kTrajectory: {
       const trajectory::TrackingOutput& tracked =

@@ -40,6 +40,7 @@ TEST(Rejoin, FirstEstimateAirborneHoldsWhereTheVehicleIsWithItsYaw) {
   ASSERT_TRUE(gen.update(rejoinEstimate(5.01, Vec3(0.1, 0.2, 0.7), 0.4), ref));
   EXPECT_EQ(gen.phase(), FlightPhase::kHold);
   EXPECT_TRUE(gen.rejoined());
+  EXPECT_FALSE(gen.recovering()) << "level and at rest: held where first seen, at once";
   EXPECT_EQ(position(ref.x), Vec3(0.1, 0.2, 0.7));
   EXPECT_EQ(velocity(ref.x), Vec3::Zero());
   EXPECT_NEAR(quat::yaw(orientation(ref.x)), 0.4, 1e-12);
@@ -98,6 +99,63 @@ TEST(Rejoin, TakeoffWhileFlyingNormallyChangesNothing) {
   gen.handleCommand(command(CommandType::kTakeoff, 2, Vec3(0, 0, 1.0)));
   ASSERT_TRUE(gen.update(rejoinEstimate(0.03, Vec3(0, 0, 0.5)), ref));
   EXPECT_EQ(position(ref.x), Vec3(0, 0, 2.0));
+}
+
+StateEstimate movingEstimate(double t, const Vec3& p, double roll, const Vec3& v) {
+  StateEstimate e = rejoinEstimate(t, p);
+  e.orientation = quat::exp(Vec3(roll, 0.0, 0.0));
+  e.velocity = v;
+  return e;
+}
+
+// An airborne start or a throw: tilted and moving, the reference is the vehicle itself (level, at
+// rest: right it and stop it) until it is level and stopped, and the hold is set there, not at the
+// place first seen.
+TEST(Rejoin, ATiltedOrMovingVehicleIsRightedAndStoppedBeforeItHoldsWhereItStopped) {
+  ReferenceGenerator gen(ControllerParams{}, kDefaultGravity);
+  Reference ref;
+  ASSERT_TRUE(gen.update(movingEstimate(0.0, Vec3(0, 0, 12), 2.0, Vec3(0.5, 0, 0)), ref));
+  EXPECT_TRUE(gen.recovering());
+  EXPECT_EQ(position(ref.x), Vec3(0, 0, 12));
+  ASSERT_TRUE(gen.update(movingEstimate(1.0, Vec3(0.4, -2.0, 8.0), 0.0, Vec3(0, -4.8, -4.7)), ref));
+  EXPECT_TRUE(gen.recovering()) << "level but still moving";
+  EXPECT_EQ(position(ref.x), Vec3(0.4, -2.0, 8.0));
+  EXPECT_EQ(velocity(ref.x), Vec3::Zero());
+  EXPECT_NEAR(quat::tilt(orientation(ref.x)), 0.0, 1e-12);
+  ASSERT_TRUE(gen.update(movingEstimate(1.5, Vec3(0.5, -4.3, 6.4), 0.5, Vec3(0, -0.3, 0)), ref));
+  EXPECT_TRUE(gen.recovering()) << "stopped but tilted 29 deg";
+  ASSERT_TRUE(gen.update(movingEstimate(2.0, Vec3(0.53, -4.47, 6.3), 0.1, Vec3(0, 0.3, 0)), ref));
+  EXPECT_FALSE(gen.recovering());
+  EXPECT_EQ(position(ref.x), Vec3(0.53, -4.47, 6.3));
+  ASSERT_TRUE(gen.update(movingEstimate(2.5, Vec3(0.6, -4.3, 6.5), 0.05, Vec3(0, 0.4, 0)), ref));
+  EXPECT_EQ(position(ref.x), Vec3(0.53, -4.47, 6.3)) << "held, no longer following";
+  // Negative: with a recovery speed below what it moves at, the same flight never holds.
+  ControllerParams strict;
+  strict.recovery_speed = 0.2;
+  ReferenceGenerator still_recovering(strict, kDefaultGravity);
+  ASSERT_TRUE(still_recovering.update(movingEstimate(0.0, Vec3(0, 0, 12), 2.0, Vec3(0.5, 0, 0)), ref));
+  ASSERT_TRUE(still_recovering.update(movingEstimate(2.0, Vec3(0.53, -4.47, 6.3), 0.1, Vec3(0, 0.3, 0)), ref));
+  EXPECT_TRUE(still_recovering.recovering());
+}
+
+// A re-sent TAKEOFF during the recovery names the held height; a GOTO ends the recovery at once.
+TEST(Rejoin, ATakeoffKeepsItsHeightThroughTheRecoveryAndAGotoEndsIt) {
+  ReferenceGenerator gen(ControllerParams{}, kDefaultGravity);
+  Reference ref;
+  ASSERT_TRUE(gen.update(movingEstimate(0.0, Vec3(0, 0, 3), 1.0, Vec3(1, 0, 0)), ref));
+  gen.handleCommand(command(CommandType::kTakeoff, 1, Vec3(0, 0, 2.0)));
+  ASSERT_TRUE(gen.update(movingEstimate(0.5, Vec3(0.4, 0, 2.6), 0.5, Vec3(1, 0, 0)), ref));
+  EXPECT_TRUE(gen.recovering());
+  ASSERT_TRUE(gen.update(movingEstimate(1.0, Vec3(0.6, 0, 2.5), 0.0, Vec3(0.1, 0, 0)), ref));
+  EXPECT_FALSE(gen.recovering());
+  EXPECT_EQ(position(ref.x), Vec3(0.6, 0, 2.0));
+
+  ReferenceGenerator told(ControllerParams{}, kDefaultGravity);
+  ASSERT_TRUE(told.update(movingEstimate(0.0, Vec3(0, 0, 3), 1.0, Vec3(1, 0, 0)), ref));
+  told.handleCommand(command(CommandType::kGoto, 2, Vec3(1, 1, 2)));
+  ASSERT_TRUE(told.update(movingEstimate(0.5, Vec3(0.4, 0, 2.6), 0.5, Vec3(1, 0, 0)), ref));
+  EXPECT_FALSE(told.recovering());
+  EXPECT_EQ(position(ref.x), Vec3(1, 1, 2));
 }
 
 // The controller as a whole: the re-send of the command it handled last changes nothing; a

@@ -56,11 +56,15 @@ std::optional<RecoveryReport> analyzeRecovery(const logger::FlightLog& log, cons
   // On the ground is neither level nor settled: the ground puts a fallen vehicle level.
   r.level_time = holdsFrom(log, r.start, end,
                            [&](const SimTruth& s) { return !s.on_ground && quat::tilt(s.orientation) <= level; });
-  r.settle_time = holdsFrom(log, r.start, end, [&](const SimTruth& s) {
-    const auto i = log.reference.indexAtOrBefore(s.utime);
-    if (i < 0 || s.on_ground) return false;
-    return (s.position - position(log.reference[static_cast<size_t>(i)].x)).norm() <= options.settle_error;
-  });
+  // The hold it ends in: the last reference before the landing (or the end of the log).
+  const auto last = log.reference.indexAtOrBefore(std::isfinite(land) ? std::llround(land * 1e6) - 1
+                                                                     : std::numeric_limits<int64_t>::max());
+  if (last >= 0) {
+    const Vec3 hold = position(log.reference[static_cast<size_t>(last)].x);
+    r.settle_time = holdsFrom(log, r.start, end, [&](const SimTruth& s) {
+      return !s.on_ground && (s.position - hold).norm() <= options.settle_error;
+    });
+  }
   double start_z = kNaN, lowest = std::numeric_limits<double>::infinity();
   for (const SimTruth& s : log.sim_truth.messages) {
     const double t = seconds(s.utime);

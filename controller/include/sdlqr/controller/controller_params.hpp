@@ -27,6 +27,10 @@ struct ControllerParams {
   // plane z = 0 of the world frame (the frame VIO and the simulator share) rejoins the flight in a
   // hold instead of waiting on the ground for a take-off.
   double rejoin_height;
+  // A rejoin first levels and stops the vehicle (the reference at the vehicle itself), and holds
+  // where it is once tilted at most recovery_tilt_deg and moving at most recovery_speed.
+  double recovery_tilt_deg;
+  double recovery_speed;
   ReferenceMode tracking;  // for trajectories that do not say
   trajectory::TrajectoryGuardParams guard;  // aborts a trajectory that flies the vehicle away
   // The law itself is lqr.law (the gain solver needs it too); these belong to the controller alone.

@@ -6,6 +6,11 @@
 // Rejoining: a generator whose first initialised estimate shows the vehicle airborne (a controller
 // restarted mid-flight while the lowlevel's failsafe holds the vehicle level) holds where the
 // vehicle is instead of idling; the mission's re-sent TAKEOFF or GOTO then restores the setpoint.
+// A rejoin on a vehicle tilted or moving (an airborne start, a throw) first recovers: the reference
+// is the vehicle's own position, level and at rest, so the law only rights and stops it; once it is
+// within recovery_tilt_deg and recovery_speed the hold is set there (as ArduPilot's Throw mode
+// uprights, then holds). Chasing the point first seen instead flies back metres the vehicle was
+// thrown while righting itself, tilted all the way.
 
 #include "sdlqr/messages/messages.hpp"
 #include "sdlqr/controller/controller_params.hpp"
@@ -36,6 +41,8 @@ class ReferenceGenerator {
   FlightPhase phase() const { return phase_; }
   // True from a rejoin until the next command: a TAKEOFF then sets the held height above the ground.
   bool rejoined() const { return rejoined_; }
+  // True from a rejoin until the vehicle is level and stopped (or a GOTO, LAND or DISARM).
+  bool recovering() const { return recovering_; }
   const trajectory::TrajectoryTracker& tracker() const { return tracker_; }
   // Trajectories aborted into a hold by the guard (trajectory/guard.hpp), and why the last was.
   int64_t guardAborts() const { return guard_aborts_; }
@@ -46,6 +53,7 @@ class ReferenceGenerator {
   void hold(const Vec3& position, double yaw);
   bool landedAt(const StateEstimate& estimate);
   void rejoin(const StateEstimate& estimate);
+  Vec3 recoveryReference(const StateEstimate& estimate);
 
   ControllerParams params_;
   double gravity_;
@@ -60,6 +68,8 @@ class ReferenceGenerator {
   double ground_z_ = 0.0;
   bool seen_estimate_ = false;  // an initialised estimate has reached update()
   bool rejoined_ = false;
+  bool recovering_ = false;
+  bool recovery_keeps_height_ = false;  // the held height came from a TAKEOFF: kept at the hold
   int64_t last_utime_ = -1;
   int64_t landed_since_utime_ = -1;
   trajectory::TrajectoryTracker tracker_;

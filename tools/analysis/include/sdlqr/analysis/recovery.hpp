@@ -13,7 +13,7 @@ namespace sdlqr::analysis {
 
 struct RecoveryOptions {
   double level_tilt_deg = 10.0;  // [deg] level: tilt at most this, and staying
-  double settle_error = 0.10;    // [m] settled: within this of the reference, and staying
+  double settle_error = 0.10;    // [m] settled: within this of the final hold, and staying
 };
 
 struct RecoveryReport {
@@ -23,7 +23,9 @@ struct RecoveryReport {
   double detect_delay;           // [s] throw: ARM after the release (NaN: never detected)
   double level_time;             // [s] after start, tilt below level_tilt_deg for good
   double height_lost;            // [m] z at the start minus the lowest z after it
-  double settle_time;            // [s] after start, within settle_error of the reference for good
+  double settle_time;            // [s] after start, within settle_error of the final hold for good
+                                 // (the reference before the landing: a recovering controller's
+                                 // reference follows the vehicle until it holds)
   double initial_tilt_deg = 0.0; // [deg] at the start
 };
 
