@@ -54,7 +54,11 @@ Recomputation::Recomputation(const ReplayParams& params, const RecordedFlight& f
       command_delivered_(flight.command.size(), false),
       recorded_gains_(indexBySeq(flight.gains)),
       recorded_reference_(indexBySeq(flight.reference)),
-      recorded_estimate_(indexBySeq(flight.state_estimate)) {}
+      recorded_estimate_(indexBySeq(flight.state_estimate)) {
+  for (const Reference& r : flight.reference) {
+    if (r.trajectory_seq >= 0) first_reference_tracking_.emplace(r.trajectory_seq, r.seq);
+  }
+}
 
 void Recomputation::step() {
   const LogPosition p = flight_.order[next_++];
@@ -65,7 +69,7 @@ void Recomputation::step() {
     case InputKind::kVioPose: estimator_.onVio(flight_.vio_pose[i]); break;
     case InputKind::kStateEstimate: onRecordedEstimate(flight_.state_estimate[i]); break;
     case InputKind::kCommand: heard_commands_.push_back(i); break;
-    case InputKind::kTrajectory: controller_.onTrajectory(flight_.trajectory[i]); break;
+    case InputKind::kTrajectory: onRecordedTrajectory(i); break;
     case InputKind::kParams: onParams(flight_.params[i]); break;
     case InputKind::kGains: onRecordedGains(flight_.gains[i]); break;
     case InputKind::kUndecodable: onUndecodable(flight_.undecodable[i]); break;
@@ -74,6 +78,7 @@ void Recomputation::step() {
 }
 
 void Recomputation::finish() {
+  deliverTrajectoriesNamedBy(std::numeric_limits<int64_t>::max());
   for (const auto& [seq, estimate] : waiting_) handOver(estimate);
   waiting_.clear();
   judgeGainsHeardEarly(std::numeric_limits<int64_t>::max());
@@ -249,6 +254,7 @@ void Recomputation::controllerOnEstimate(const StateEstimate& estimate) {
   while (next_tick_ < ticks.size() && ticks[next_tick_].state_seq < estimate.seq - 1) ++next_tick_;
   if (next_tick_ < ticks.size() && ticks[next_tick_].state_seq <= estimate.seq) {
     feedNamedGains(ticks[next_tick_].gains_seq);
+    deliverTrajectoriesNamedBy(ticks[next_tick_].reference_seq);
   }
   // The controller's STATE_EST queue holds one message: a busy controller misses estimates, and
   // a tick then comes later than the grid point (on the next estimate it did receive). An
@@ -359,6 +365,33 @@ void Recomputation::applyCommand(std::size_t index) {
   const Command& command = flight_.command[index];
   applied_command_seq_ = std::max(applied_command_seq_, command.seq);
   controller_.onCommand(command);
+}
+
+// TRAJECTORY and STATE_EST race on the bus like COMMAND does: one the recorder heard before the
+// next tick, but which only a later tick's REFERENCE tracks, reached the controller after that
+// tick; it is held until the tick that tracks it. One no REFERENCE tracks (refused, or never
+// started) is delivered where the recorder heard it.
+void Recomputation::onRecordedTrajectory(std::size_t index) {
+  const auto tracked = first_reference_tracking_.find(flight_.trajectory[index].seq);
+  const std::vector<RateCommand>& ticks = flight_.rate_command;
+  const bool tracked_later = tracked != first_reference_tracking_.end() && next_tick_ < ticks.size() &&
+                             ticks[next_tick_].reference_seq < tracked->second;
+  if (tracked_later || !held_trajectories_.empty()) {
+    held_trajectories_.push_back(index);  // behind a held one: the controller hears them in order
+    return;
+  }
+  controller_.onTrajectory(flight_.trajectory[index]);
+}
+
+// The held trajectories up to the last one first tracked by REFERENCE `reference_seq` or earlier.
+void Recomputation::deliverTrajectoriesNamedBy(int64_t reference_seq) {
+  std::size_t last = 0;  // one past the last to deliver
+  for (std::size_t k = 0; k < held_trajectories_.size(); ++k) {
+    const auto tracked = first_reference_tracking_.find(flight_.trajectory[held_trajectories_[k]].seq);
+    if (tracked != first_reference_tracking_.end() && tracked->second <= reference_seq) last = k + 1;
+  }
+  for (std::size_t k = 0; k < last; ++k) controller_.onTrajectory(flight_.trajectory[held_trajectories_[k]]);
+  held_trajectories_.erase(held_trajectories_.begin(), held_trajectories_.begin() + static_cast<std::ptrdiff_t>(last));
 }
 
 void Recomputation::onParams(const ParamsUpdate& update) {

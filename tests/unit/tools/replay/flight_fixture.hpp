@@ -53,7 +53,7 @@ inline ClosedLoopFlight flyClosedLoop(const std::function<void(mission::Scenario
   f.reference = log.reference.messages;
   f.gains = log.gains.messages;
 
-  size_t vio = 0, command = 0, estimate = 0;
+  size_t vio = 0, command = 0, trajectory = 0, estimate = 0;
   for (size_t i = 0; i < f.imu.size(); ++i) {
     const int64_t utime = f.imu[i].utime;
     // The STATE_EST this sample completes, if any.
@@ -68,6 +68,9 @@ inline ClosedLoopFlight flyClosedLoop(const std::function<void(mission::Scenario
     // The scenario player runs on SIM_CLOCK, which the simulator publishes after the step's IMU.
     while (command < f.command.size() && f.command[command].utime <= utime) {
       f.order.push_back({InputKind::kCommand, static_cast<int32_t>(command++)});
+    }
+    while (trajectory < f.trajectory.size() && f.trajectory[trajectory].utime <= utime) {
+      f.order.push_back({InputKind::kTrajectory, static_cast<int32_t>(trajectory++)});
     }
   }
   return out;

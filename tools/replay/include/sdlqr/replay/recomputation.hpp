@@ -132,6 +132,8 @@ class Recomputation {
   void deliverCommandsBefore(const StateEstimate& estimate);
   bool ticksWithoutHeardCommands(const StateEstimate& estimate) const;
   void applyCommand(std::size_t index);
+  void onRecordedTrajectory(std::size_t index);
+  void deliverTrajectoriesNamedBy(int64_t reference_seq);
   void onParams(const ParamsUpdate& update);
 
   const RecordedFlight& flight_;
@@ -156,6 +158,9 @@ class Recomputation {
   std::vector<std::size_t> heard_commands_;  // COMMANDs the recorder heard, not yet delivered
   std::vector<bool> command_delivered_;      // by index into flight_.command
   int64_t applied_command_seq_ = -1;         // highest seq delivered
+  // TRAJECTORY seq -> seq of the first recorded REFERENCE that tracks it.
+  std::map<int64_t, int64_t> first_reference_tracking_;
+  std::vector<std::size_t> held_trajectories_;  // heard before the tick that first tracked them
   // Recomputed outputs by seq, for the pairing.
   SeqIndex replayed_gains_, replayed_reference_;
   std::vector<GainSet> gains_heard_early_;  // recorded before the estimate they were solved at
