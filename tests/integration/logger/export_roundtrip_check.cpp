@@ -10,7 +10,6 @@
 //
 // Prints the counts it compared; exit code 1 on any mismatch.
 
-#include <lcm/eventlog.h>
 #include <lcm/lcm-cpp.hpp>
 
 #include <cstdlib>
@@ -18,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -30,6 +30,7 @@
 #include "sdlqr/logger/csv_row.hpp"
 #include "sdlqr/logger/decode.hpp"
 #include "sdlqr/logger/log_reader.hpp"
+#include "sdlqr/logger/recorder.hpp"
 
 namespace {
 
@@ -170,21 +171,17 @@ int writeReorderedHeartbeats(const std::string& in, const std::string& out) {
     if (events[i].channel == "HEARTBEAT") heartbeats.push_back(i);
   }
   for (size_t h = 0; h + 1 < heartbeats.size(); h += 2) std::swap(events[heartbeats[h]], events[heartbeats[h + 1]]);
-  lcm_eventlog_t* log = lcm_eventlog_create(out.c_str(), "w");
-  if (!log) throw std::runtime_error("cannot create '" + out + "'");
-  int failures = 0;
-  for (RecordedEvent& e : events) {
-    lcm_eventlog_event_t record{};
-    record.timestamp = e.receive_utime;
-    record.channellen = static_cast<int32_t>(e.channel.size());
-    record.datalen = static_cast<int32_t>(e.bytes.size());
-    record.channel = e.channel.data();
-    record.data = e.bytes.data();
-    failures += lcm_eventlog_write_event(log, &record) != 0;
+  RecorderOptions options;
+  options.path = out;
+  options.queue_events = events.size() + 1;  // the whole log queued at once: nothing dropped
+  options.queue_bytes = std::numeric_limits<std::size_t>::max();
+  Recorder recorder(options);  // the logger's own writer
+  for (const RecordedEvent& e : events) {
+    if (!recorder.push(e.channel, e.bytes.data(), e.bytes.size(), e.receive_utime)) throw std::runtime_error("queue full");
   }
-  lcm_eventlog_destroy(log);
+  recorder.stop();
   std::cout << "[ figures ] " << heartbeats.size() / 2 << " pairs of HEARTBEATs swapped\n";
-  return failures == 0 ? 0 : 1;
+  return recorder.stats().write_errors == 0 ? 0 : 1;
 }
 
 }  // namespace
