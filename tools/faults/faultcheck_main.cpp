@@ -49,6 +49,12 @@ std::vector<std::string> splitList(const std::string& text) {
   return names;
 }
 
+std::string joinList(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ",") + name;
+  return text;
+}
+
 bool checkGains(const logger::FlightLog& log, const std::string& text, double fallback_timeout, double max_resume) {
   const auto [kill, restart] = parseOutage("--gains-outage", text);
   const faults::GainsOutage g = faults::measureGainsOutage(log, kill, restart, fallback_timeout);
@@ -112,13 +118,11 @@ int main(int argc, char** argv) {
     parser.addOption("--max-silence", &max_silence, "S",
                      "longest heartbeat gap of any process, and longest silence before the end of the log,\n"
                      "wall time (default 2.5)");
-    // The scenario player ends every run (policy `finish` in config/stack.procs): the others are
-    // stopped after it, so the log goes on without it for as long as their shutdown takes.
-    std::string expected_text, may_stop_text = "sdlqr-fuzz-publisher,sdlqr-mission";
+    std::string expected_text, may_stop_text = joinList(faults::kProcessesThatMayStop);
     parser.addOption("--expect", &expected_text, "A,B,...", "processes that must have sent heartbeats");
     parser.addOption("--may-stop", &may_stop_text, "A,B,...",
                      "processes that may end before the log does, with a STOPPING heartbeat\n"
-                     "(default sdlqr-fuzz-publisher,sdlqr-mission)");
+                     "(default " + may_stop_text + ")");
     parser.addOption("--hover", &hover_text, "T0,T1,X,Y,Z",
                      "max |truth - (X,Y,Z)| over simulation time [T0, T1] s must stay below --max-hover-error");
     parser.addOption("--max-hover-error", &max_hover_error, "M", "default 0.1 m");

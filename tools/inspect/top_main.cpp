@@ -47,6 +47,8 @@ int waitForHeartbeats(bus::Node& bus, const std::string& names, double timeout_s
   while (!missing.empty() && bus.spin(20)) {
     if (std::chrono::steady_clock::now() > deadline) break;
   }
+  // A waiter that took over a second has beaten (STARTING): its last heartbeat says it stopped.
+  bus.shutdown();
   if (missing.empty()) return 0;
   std::string text;
   for (const std::string& name : missing) text += (text.empty() ? "" : ", ") + name;

@@ -84,6 +84,19 @@ TEST(Liveness, OnlyAProcessAllowedToStopMayEndEarlyAndOnlyWithAStoppingHeartbeat
   EXPECT_FALSE(allOk(judgeLiveness(measureLiveness(hung), rules)));
 }
 
+// A loss flight's launch took over a second to hear every process: the launcher's waiter beat
+// twice, then ended with its STOPPING heartbeat long before the log did.
+TEST(Liveness, TheLaunchersWaiterMayStopByDefaultButNotHangThere) {
+  LivenessRules rules;
+  rules.may_stop = kProcessesThatMayStop;
+  logger::FlightLog log = flight(30.0, 30.0);
+  for (int i = 0; i <= 2; ++i) beat(log, "sdlqr-top", 400, i, 0.5 * i, i == 2 ? 4 : 0);
+  EXPECT_TRUE(allOk(judgeLiveness(measureLiveness(log), rules)));
+  logger::FlightLog hung = flight(30.0, 30.0);
+  for (int i = 0; i <= 2; ++i) beat(hung, "sdlqr-top", 400, i, 0.5 * i);
+  EXPECT_FALSE(allOk(judgeLiveness(measureLiveness(hung), rules)));
+}
+
 TEST(Liveness, ReplayedAndForgedHeartbeatsDoNotKeepAHungProcessAlive) {
   logger::FlightLog log = flight(12.0, 30.0);
   // A hostile peer resends the controller's last heartbeat (same seq), a copy with its seq
