@@ -3,7 +3,9 @@
 # rest of the stack did meanwhile (sdlqr-faultcheck --NAME-outage). The launcher starts the stack
 # without NAME (--without); this script runs NAME itself so it can kill and restart it.
 #   process_outage.sh BUILD_DIR WORK_DIR SCENARIO NAME KILL_AFTER_S DOWN_FOR_S [faultcheck options...]
-# NAME: gains, estimator or controller. KILL_AFTER_S: wall seconds after the launch.
+# NAME: gains, estimator or controller. KILL_AFTER_S: wall seconds after the simulator started (the
+# launcher's "scenario" line), not after the launch: the bus calibration and the start-up before
+# it took 2 s on one machine and over 5 s on another, where the kill landed before the take-off.
 set -uo pipefail
 build="$1" work="$2" scenario="$3" name="$4" kill_after="$5" down_for="$6"
 shift 6
@@ -24,6 +26,13 @@ now_us() { date +%s%6N; }
 launcher=$!
 "$binary" --config "$config" > "$work/$name.1.out" 2>&1 &
 pid=$!
+started=0
+for _ in $(seq 600); do
+  grep -q '^launch: scenario ' "$work/launch.out" && { started=1; break; }
+  kill -0 "$launcher" 2>/dev/null || break
+  sleep 0.1
+done
+[ "$started" = 1 ] || { echo "process_outage: the simulator never started"; cat "$work/launch.out"; kill -TERM "$launcher" "$pid"; wait; exit 1; }
 sleep "$kill_after"
 kill -0 "$pid" 2>/dev/null || { echo "process_outage: $name died on its own"; cat "$work/$name.1.out"; kill -TERM "$launcher"; wait; exit 1; }
 kill_us=$(now_us)
