@@ -118,11 +118,13 @@ int main(int argc, char** argv) {
     parser.addOption("--max-silence", &max_silence, "S",
                      "longest heartbeat gap of any process, and longest silence before the end of the log,\n"
                      "wall time (default 2.5)");
-    std::string expected_text, may_stop_text = joinList(faults::kProcessesThatMayStop);
+    std::string expected_text, may_stop_text = joinList(faults::kProcessesThatMayStop), also_may_stop_text;
     parser.addOption("--expect", &expected_text, "A,B,...", "processes that must have sent heartbeats");
     parser.addOption("--may-stop", &may_stop_text, "A,B,...",
                      "processes that may end before the log does, with a STOPPING heartbeat\n"
                      "(default " + may_stop_text + ")");
+    parser.addOption("--also-may-stop", &also_may_stop_text, "A,B,...",
+                     "processes added to --may-stop's list (a test's own publisher, say)");
     parser.addOption("--hover", &hover_text, "T0,T1,X,Y,Z",
                      "max |truth - (X,Y,Z)| over simulation time [T0, T1] s must stay below --max-hover-error");
     parser.addOption("--max-hover-error", &max_hover_error, "M", "default 0.1 m");
@@ -193,6 +195,7 @@ int main(int argc, char** argv) {
     liveness.max_silence_s = max_silence;
     liveness.expected = splitList(expected_text);
     liveness.may_stop = splitList(may_stop_text);
+    for (const std::string& process : splitList(also_may_stop_text)) liveness.may_stop.push_back(process);
     // A process killed on purpose is silent for its outage; restarted, it must beat to the end.
     if (!gains_outage.empty()) liveness.killed.push_back("sdlqr-gains");
     if (!estimator_outage.empty()) liveness.killed.push_back("sdlqr-estimator");

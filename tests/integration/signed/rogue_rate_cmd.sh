@@ -17,7 +17,7 @@ root="$here/../../.."
 rm -rf "$work"
 mkdir -p "$work/signed" "$work/unsigned"
 unset SDLQR_BUS_KEY
-hover=(--hover 5,10,0,0,1 --max-hover-error 0.1 --may-stop sdlqr-mission,rogue-rate-cmd)
+hover=(--hover 5,10,0,0,1 --max-hover-error 0.1 --also-may-stop rogue-rate-cmd)
 
 fly() {  # CASE launch options...: the flight with the rogue; sets launch_status, rogue_status
   local case="$1"
@@ -103,7 +103,7 @@ fly unsigned --unsigned
 "$build/bin/sdlqr-faultcheck" "$work/unsigned/flight.lcmlog" "${hover[@]}" >"$work/unsigned/hover.out"
 hover_status=$?
 "$build/bin/sdlqr-faultcheck" "$work/unsigned/flight.lcmlog" --require reject.rate_cmd.unsigned \
-  --may-stop sdlqr-mission,rogue-rate-cmd >"$work/unsigned/require.out"
+  --also-may-stop rogue-rate-cmd >"$work/unsigned/require.out"
 require_status=$?
 grep -E 'hover error' "$work/unsigned/hover.out"
 if [ "$rogue_status" -eq 0 ] && [ "$hover_status" -ne 0 ] && [ "$require_status" -ne 0 ]; then
