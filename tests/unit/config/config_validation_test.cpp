@@ -24,6 +24,7 @@
 #include "prerequisite.hpp"
 #include "declared_cases.hpp"
 #include "sdlqr/params/vehicle_file.hpp"
+#include "test_paths.hpp"
 
 namespace {
 
@@ -72,7 +73,7 @@ std::string commandOf(const std::string& executable) {
 
 // What `executable --print-config` prints (the sections it reads, with the built-in defaults).
 std::string printedConfig(const std::string& executable) {
-  const std::string out_path = ::testing::TempDir() + "print_config_" + shortName(executable) + ".yaml";
+  const std::string out_path = sdlqr::test::tempPath("print_config_" + shortName(executable) + ".yaml");
   const int status = std::system(
       (commandOf(executable) + " --config " + quoted(SDLQR_VEHICLE_FILE) + " --print-config > " + quoted(out_path)).c_str());
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << executable << " --print-config";

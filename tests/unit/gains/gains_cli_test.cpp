@@ -18,6 +18,7 @@
 
 #include "sdlqr/math/lqr.hpp"
 #include "sdlqr/gains/gains_cli.hpp"
+#include "test_paths.hpp"
 
 namespace sdlqr {
 namespace {
@@ -188,9 +189,7 @@ std::string readFile(const std::string& path) {
 }
 
 RunResult runGains(const std::string& arguments) {
-  static int counter = 0;
-  const std::string base = ::testing::TempDir() + "sdlqr_gains_" + std::to_string(::getpid()) + "_" +
-                           std::to_string(counter++);
+  const std::string base = sdlqr::test::tempPath("gains");
   const std::string command = std::string(SDLQR_BINARY_DIR) + "/bin/sdlqr-gains " + arguments + " >" + base +
                               ".out 2>" + base + ".err";
   const int status = std::system(command.c_str());
@@ -245,7 +244,7 @@ TEST(GainsOnce, PrintsOneJsonObjectWhoseKEqualsTheLibraryDigitForDigit) {
 }
 
 TEST(GainsOnce, IterativeMethodAndConfigWeightsAreUsed) {
-  const std::string config = ::testing::TempDir() + "sdlqr_gains_test_config.yaml";
+  const std::string config = sdlqr::test::tempPath("gains_test_config.yaml");
   {
     std::ofstream out(config);
     out << "lqr:\n  r_diag: [2, 4, 4, 0.2]\n  dt: 0.02\n  tolerance: 1.0e-11\n";
@@ -277,7 +276,7 @@ TEST(GainsOnce, NonUnitQuaternionIsReportedNormalized) {
 }
 
 TEST(GainsOnce, BadInputExitsWithCodeTwoAndOneLine) {
-  const std::string config = ::testing::TempDir() + "sdlqr_gains_bad_r.yaml";
+  const std::string config = sdlqr::test::tempPath("gains_bad_r.yaml");
   {
     std::ofstream out(config);
     out << "lqr:\n  r_diag: [1, 5, 0, 0.1]\n";

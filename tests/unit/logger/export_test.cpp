@@ -83,7 +83,11 @@ TEST(Export, EveryTypeRoundTripsExactly) {
   ASSERT_EQ(result.channels.size(), expected.size());
 
   size_t values_compared = 0;
-  for (const auto& [channel, messages] : expected) {
+  for (const auto& entry : expected) {
+    // Named references, not a structured binding: the lambda below captures them (C++17 does not
+    // let a lambda capture a structured binding; clang, which builds the sanitizer pass, refuses).
+    const std::string& channel = entry.first;
+    const auto& messages = entry.second;
     const ExportedChannel* exported = findExported(result, channel);
     ASSERT_NE(exported, nullptr) << channel;
     EXPECT_EQ(exported->rows, static_cast<int64_t>(messages.size())) << channel;

@@ -7,12 +7,13 @@
 #include <string>
 
 #include "sdlqr/mission/scenario.hpp"
+#include "test_paths.hpp"
 
 namespace sdlqr::mission {
 namespace {
 
 std::string errorOf(const std::string& yaml) {
-  const std::string path = ::testing::TempDir() + "/stress_scenario.yaml";
+  const std::string path = sdlqr::test::tempPath("stress_scenario.yaml");
   std::ofstream(path) << yaml;
   try {
     Scenario::load(path);
@@ -23,7 +24,7 @@ std::string errorOf(const std::string& yaml) {
 }
 
 TEST(StressScenario, SimAndThrowModeKeysAreRead) {
-  const std::string path = ::testing::TempDir() + "/stress_ok.yaml";
+  const std::string path = sdlqr::test::tempPath("stress_ok.yaml");
   std::ofstream(path) << "sim: {plant: {mass_scale: 1.2}, wind: {steady: [1, 0, 0]}}\nthrow_mode: {at: 1.0, type: drop}\n";
   const Scenario s = Scenario::load(path);
   EXPECT_EQ(s.sim.plant.mass_scale, 1.2);

@@ -9,6 +9,7 @@
 
 #include "sdlqr/config/config.hpp"
 #include "sdlqr/deploy/deployment.hpp"
+#include "test_paths.hpp"
 
 namespace sdlqr::deploy {
 namespace {
@@ -16,8 +17,8 @@ namespace {
 const std::string kStackTable = std::string(SDLQR_SOURCE_DIR) + "/config/stack.procs";
 
 std::string writeTemp(const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/deployment_" +
-                           ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".yaml";
+  const std::string path = sdlqr::test::tempPath(std::string("deployment_") +
+                                                  ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".yaml");
   std::ofstream(path) << text;
   return path;
 }

@@ -5,12 +5,14 @@
 #include <sys/wait.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "sdlqr/params/vehicle_file.hpp"
+#include "test_paths.hpp"
 
 namespace sdlqr::params {
 namespace {
@@ -30,7 +32,7 @@ std::string replaced(std::string text, const std::string& from, const std::strin
 }
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = sdlqr::test::tempPath(name);
   std::ofstream(path) << text;
   return path;
 }
@@ -130,12 +132,13 @@ struct CommandRun {
 };
 
 CommandRun sdlqrParams(const std::string& arguments) {
-  const std::string out_path = ::testing::TempDir() + "sdlqr_params.out";
+  const std::string out_path = sdlqr::test::tempPath("sdlqr_params.out");
   const int status =
       std::system((std::string(SDLQR_BINARY_DIR) + "/bin/sdlqr-params " + arguments + " > " + out_path + " 2>&1").c_str());
   std::ifstream in(out_path);
   std::stringstream text;
   text << in.rdbuf();
+  std::remove(out_path.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
 }
 

@@ -9,6 +9,7 @@
 
 #include "sdlqr/soak/soak_check.hpp"
 #include "sdlqr/soak/soak_log.hpp"
+#include "test_paths.hpp"
 
 namespace sdlqr::soak {
 namespace {
@@ -86,7 +87,7 @@ TEST(SoakCheck, FewerThanTwoWindowsIsAnError) {
 }
 
 TEST(SoakCheck, ReadsTheRunnersCsvAndNamesABadLine) {
-  const std::string path = ::testing::TempDir() + "/soak_samples.csv";
+  const std::string path = sdlqr::test::tempPath("soak_samples.csv");
   {
     std::ofstream out(path);
     out << "t,process,rss_kib,fds,cpu_seconds\n1.5,sdlqr-sim,9000,11,0.25\n";
