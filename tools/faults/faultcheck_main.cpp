@@ -191,6 +191,10 @@ int main(int argc, char** argv) {
         if (interesting && value != 0) std::cout << "    " << name << " " << value << "\n";
       }
     }
+    if (alive.longest_machine_stall_s > 0.0) {
+      std::cout << "bus: the whole machine stalled, " << alive.longest_machine_stall_s << " s at most without any "
+                << "datagram (over " << faults::kMachineStallS << " s: not counted in any process's heartbeat gaps)\n";
+    }
     faults::LivenessRules liveness;
     liveness.max_silence_s = max_silence;
     liveness.expected = splitList(expected_text);

@@ -90,8 +90,10 @@ top_saw "$work/top-replay.out" $sim_channels || fail "sdlqr-top missed channels 
 run_mission() {  # label extra-args... -> mission exit code, its stderr in $work/mission-LABEL.err
   local label="$1"
   shift
-  "$bin/sdlqr-mission" "$scenario" --no-clock-timeout 4 "$@" >/dev/null 2>"$work/mission-$label.err" & local m=$!
-  sleep 1
+  "$bin/sdlqr-mission" "$scenario" --no-clock-timeout 10 "$@" >/dev/null 2>"$work/mission-$label.err" & local m=$!
+  # The replay starts once the player listens (its first HEARTBEAT), not after a guessed delay: on
+  # a busy machine a process took seconds to start and the whole 2 s replay went by unheard.
+  "$bin/sdlqr-top" --wait-for sdlqr-mission --timeout 20 "$@" >/dev/null 2>&1 || echo "sdlqr-mission not heard within 20 s"
   play
   wait "$m"
 }

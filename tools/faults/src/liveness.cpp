@@ -19,21 +19,42 @@ struct Sender {
   std::vector<size_t> beats;  // indices into the heartbeat series
 };
 
-int64_t lastReceive(const logger::FlightLog& log) {
-  int64_t end = -1;
+// Every event's receive time, of every channel, in order. A log built in memory (tests) has no
+// channel timelines: its series say the same.
+std::vector<int64_t> receiveTimes(const logger::FlightLog& log) {
+  std::vector<int64_t> times;
   for (const logger::ChannelTimeline& c : log.channels) {
-    if (!c.event_receive_utime.empty()) end = std::max(end, c.event_receive_utime.back());
+    times.insert(times.end(), c.event_receive_utime.begin(), c.event_receive_utime.end());
   }
-  // A log built in memory (tests) has no channel timelines: its series say the same.
-  auto consider = [&end](const std::vector<int64_t>& receive) {
-    if (!receive.empty()) end = std::max(end, receive.back());
-  };
-  consider(log.heartbeat.receive_utime);
-  consider(log.sim_truth.receive_utime);
-  consider(log.motor_command.receive_utime);
-  consider(log.rate_command.receive_utime);
-  consider(log.state_estimate.receive_utime);
-  return end;
+  if (times.empty()) {
+    for (const std::vector<int64_t>* series : {&log.heartbeat.receive_utime, &log.sim_truth.receive_utime,
+                                               &log.motor_command.receive_utime, &log.rate_command.receive_utime,
+                                               &log.state_estimate.receive_utime}) {
+      times.insert(times.end(), series->begin(), series->end());
+    }
+  }
+  std::sort(times.begin(), times.end());
+  return times;
+}
+
+struct Stall {
+  int64_t from = 0, to = 0;  // [us] wall: two consecutive events over kMachineStallS apart
+};
+
+std::vector<Stall> machineStalls(const std::vector<int64_t>& times) {
+  std::vector<Stall> stalls;
+  const auto threshold = static_cast<int64_t>(kMachineStallS * 1e6);
+  for (size_t i = 1; i < times.size(); ++i) {
+    if (times[i] - times[i - 1] > threshold) stalls.push_back({times[i - 1], times[i]});
+  }
+  return stalls;
+}
+
+// [us] of the machine's stalls inside (from, to).
+int64_t stalledWithin(const std::vector<Stall>& stalls, int64_t from, int64_t to) {
+  int64_t total = 0;
+  for (const Stall& s : stalls) total += std::max<int64_t>(0, std::min(to, s.to) - std::max(from, s.from));
+  return total;
 }
 
 std::string seconds(double s) {
@@ -70,7 +91,12 @@ Liveness measureLiveness(const logger::FlightLog& log) {
     all.insert(all.end(), sender.beats.begin(), sender.beats.end());
   }
   Liveness out;
-  out.log_end_utime = lastReceive(log);
+  const std::vector<int64_t> times = receiveTimes(log);
+  out.log_end_utime = times.empty() ? -1 : times.back();
+  const std::vector<Stall> stalls = machineStalls(times);
+  for (const Stall& s : stalls) {
+    out.longest_machine_stall_s = std::max(out.longest_machine_stall_s, 1e-6 * static_cast<double>(s.to - s.from));
+  }
   for (const auto& [process, count] : offered) {
     ProcessLiveness p;
     p.process = process;
@@ -81,13 +107,21 @@ Liveness measureLiveness(const logger::FlightLog& log) {
     p.senders = senders_of[process];
     for (size_t k = 0; k < beats.size(); ++k) {
       const int64_t t = log.heartbeat.receive_utime[beats[k]];
-      if (k == 0) p.first_receive_utime = t;
-      else p.longest_gap_s = std::max(p.longest_gap_s, 1e-6 * static_cast<double>(t - p.last_receive_utime));
+      if (k == 0) {
+        p.first_receive_utime = t;
+      } else {
+        const int64_t stalled = stalledWithin(stalls, p.last_receive_utime, t);
+        p.longest_gap_s = std::max(p.longest_gap_s, 1e-6 * static_cast<double>(t - p.last_receive_utime - stalled));
+        p.stall_not_counted_s = std::max(p.stall_not_counted_s, 1e-6 * static_cast<double>(stalled));
+      }
       p.last_receive_utime = t;
       p.last_state = log.heartbeat[beats[k]].state;
       p.last_index = static_cast<std::ptrdiff_t>(beats[k]);
     }
-    if (p.beats > 0) p.silent_at_end_s = 1e-6 * static_cast<double>(out.log_end_utime - p.last_receive_utime);
+    if (p.beats > 0) {
+      p.silent_at_end_s = 1e-6 * static_cast<double>(out.log_end_utime - p.last_receive_utime -
+                                                      stalledWithin(stalls, p.last_receive_utime, out.log_end_utime));
+    }
     out.processes.push_back(p);
   }
   return out;
@@ -108,7 +142,10 @@ std::vector<Finding> judgeLiveness(const Liveness& liveness, const LivenessRules
       continue;
     }
     const bool gap_ok = listed(rules.killed, p.process) || p.longest_gap_s <= rules.max_silence_s;
-    findings.push_back({gap_ok, p.process + ": longest heartbeat gap " + seconds(p.longest_gap_s) + " (limit " +
+    const std::string stall = p.stall_not_counted_s > 0.0
+                                  ? ", not counting a " + seconds(p.stall_not_counted_s) + " stall of the whole bus"
+                                  : "";
+    findings.push_back({gap_ok, p.process + ": longest heartbeat gap " + seconds(p.longest_gap_s) + stall + " (limit " +
                                     seconds(rules.max_silence_s) +
                                     (listed(rules.killed, p.process) ? ", killed on purpose" : "") + ")" + ignored});
     const bool stopped = p.last_state == kStopping && listed(rules.may_stop, p.process);

@@ -126,6 +126,54 @@ TEST(Liveness, ARestartedProcessCountsAsOneThatBeatsAgain) {
   EXPECT_TRUE(allOk(judgeLiveness(l, rules)));
 }
 
+// The simulator beats at whole seconds and the controller half a second later, from 0 to 30 s; the
+// simulator is silent strictly inside (sim_from, sim_to), the controller inside (from, to). With
+// both silent together nothing at all reaches the recorder: the machine stalled.
+logger::FlightLog silences(double sim_from, double sim_to, double from, double to) {
+  logger::FlightLog log;
+  int64_t sim_seq = 0, controller_seq = 0;
+  for (int i = 0; i <= 30; ++i) {
+    if (i <= sim_from || i >= sim_to) beat(log, "sdlqr-sim", 100, sim_seq++, i);
+  }
+  for (int i = 0; i <= 29; ++i) {
+    if (i + 0.5 <= from || i + 0.5 >= to) beat(log, "sdlqr-controller", 200, controller_seq++, i + 0.5);
+  }
+  log.sim_truth.messages.push_back(SimTruth{});
+  log.sim_truth.receive_utime.push_back(livenessWall(30.0));
+  return log;
+}
+
+TEST(Liveness, AStallOfTheWholeMachineIsNotAProcessHang) {
+  // 10 .. 14 s: nothing at all on the bus (seen in the suite: every heartbeat 2.8 s apart at once);
+  // each process's gap besides it is what it alone left silent.
+  const Liveness l = measureLiveness(silences(10.2, 13.8, 10.2, 13.8));
+  EXPECT_NEAR(l.longest_machine_stall_s, 4.0, 1e-9);
+  EXPECT_NEAR(l.processes[0].longest_gap_s, 1.0, 1e-9);  // 9.5 -> 14.5, 4 s of it the machine's
+  EXPECT_NEAR(l.processes[0].stall_not_counted_s, 4.0, 1e-9);
+  const std::vector<Finding> findings = judgeLiveness(l, LivenessRules{});
+  EXPECT_TRUE(allOk(findings));
+  const Finding* controller = findingAbout(findings, "sdlqr-controller: longest heartbeat gap");
+  ASSERT_NE(controller, nullptr);
+  EXPECT_NE(controller->text.find("not counting a 4.00 s stall of the whole bus"), std::string::npos)
+      << controller->text;
+}
+
+TEST(Liveness, AProcessSilentWhileTheOthersGoOnFailsWhateverTheStalls) {
+  // The controller silent 9.5 -> 14.5 s while the simulator beats on: it hung, no stall to discount.
+  const Liveness alone = measureLiveness(silences(-1.0, -1.0, 10.2, 13.8));
+  EXPECT_EQ(alone.longest_machine_stall_s, 0.0);  // the simulator beat on every second: no stall
+  EXPECT_NEAR(alone.processes[0].longest_gap_s, 5.0, 1e-9);
+  EXPECT_FALSE(allOk(judgeLiveness(alone, LivenessRules{})));
+  // Silent 9.5 -> 20.5 s across a 4 s stall of the machine (10 -> 14 s): 7 s are its own.
+  const Liveness longer = measureLiveness(silences(10.2, 13.8, 10.2, 19.8));
+  EXPECT_NEAR(longer.processes[0].longest_gap_s, 7.0, 1e-9);
+  EXPECT_FALSE(allOk(judgeLiveness(longer, LivenessRules{})));
+  // Hung for good after 9.5 s across the same stall: its silence at the end counts all but it.
+  const Liveness hung = measureLiveness(silences(10.2, 13.8, 10.2, 99.0));
+  EXPECT_NEAR(hung.processes[0].silent_at_end_s, 30.0 - 9.5 - 4.0, 1e-9);
+  EXPECT_FALSE(allOk(judgeLiveness(hung, LivenessRules{})));
+}
+
 TEST(Liveness, AnExpectedProcessThatNeverBeatFails) {
   LivenessRules rules;
   rules.expected = {"sdlqr-sim", "sdlqr-estimator"};
