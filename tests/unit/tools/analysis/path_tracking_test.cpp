@@ -286,12 +286,15 @@ TEST(PathTracking, UntrackedTrajectoryIsNotReported) {
   EXPECT_TRUE(analysis::analyzePathTracking(log).empty());
 }
 
-mission::Scenario heldPathScenario(std::map<std::string, double> criteria) {
+// The trajectory flown at 10 s (flyHeldAtCorner), tracked as `mode`.
+mission::Scenario heldPathScenario(std::map<std::string, double> criteria, ReferenceMode mode = ReferenceMode::kSpatial) {
   mission::Scenario s;
   s.name = "synthetic";
   s.criteria = std::move(criteria);
   mission::ScenarioEvent e;
+  e.at = 10.0;
   e.kind = mission::ScenarioEvent::Kind::kTrajectory;
+  e.trajectory.tracking = mode;
   e.label = "held";
   s.events.push_back(e);
   return s;
@@ -309,12 +312,13 @@ TEST(PathTrackingCriteria, ChecksFollowTheScenario) {
   ASSERT_EQ(a.trajectories.size(), 1u);
   EXPECT_EQ(a.trajectories[0].label, "held");
   // The same criteria fail the temporal flight on its skipped samples.
-  const auto b = analysis::analyzeFlight(temporal.log, heldPathScenario(spatial_criteria));
+  const auto b = analysis::analyzeFlight(temporal.log, heldPathScenario(spatial_criteria, ReferenceMode::kTemporal));
   EXPECT_FALSE(b.passed());
   bool skip_check_failed = false;
   for (const auto& c : b.checks) skip_check_failed |= (c.name == "skipped_samples_max[held]" && !c.pass);
   EXPECT_TRUE(skip_check_failed);
-  const auto c = analysis::analyzeFlight(temporal.log, heldPathScenario({{"skip_radius", 0.25}, {"skipped_samples_min", 1}}));
+  const auto c = analysis::analyzeFlight(
+      temporal.log, heldPathScenario({{"skip_radius", 0.25}, {"skipped_samples_min", 1}}, ReferenceMode::kTemporal));
   EXPECT_TRUE(c.passed());
   // A criterion about trajectories in a flight without one fails instead of passing vacuously.
   logger::FlightLog empty;
