@@ -12,16 +12,16 @@
 #include <cstdlib>
 #include <iostream>
 #include <limits>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "sdlqr/logger/log_reader.hpp"
-#include "sdlqr/logger/recorder.hpp"
+#include "recorded_events.hpp"
 
 namespace {
 
-using namespace sdlqr::logger;
+using namespace sdlqr;
 
 constexpr std::size_t kSeqOffset = 16;  // fingerprint, utime
 
@@ -32,37 +32,19 @@ int64_t seqOf(const uint8_t* data, std::size_t size) {
   return static_cast<int64_t>(value);
 }
 
-struct Kept {
-  std::string channel;
-  std::vector<uint8_t> bytes;
-  int64_t receive_utime = 0;
-};
-
 int run(const std::string& in, const std::string& out, const std::string& channel, bool by_seq, int64_t seq) {
-  LogReader reader(in);
-  std::vector<Kept> kept;
+  std::vector<test::RecordedEvent> kept;
   int64_t removed = 0;
-  LogEvent event;
-  while (reader.next(&event)) {
-    const auto size = static_cast<std::size_t>(event.size);
-    if (event.channel == channel && (!by_seq || seqOf(event.data, size) == seq)) {
+  for (test::RecordedEvent& e : test::readEvents(in)) {
+    if (e.channel == channel && (!by_seq || seqOf(e.bytes.data(), e.bytes.size()) == seq)) {
       ++removed;
       continue;
     }
-    kept.push_back({std::string(event.channel), std::vector<uint8_t>(event.data, event.data + size), event.receive_utime});
+    kept.push_back(std::move(e));
   }
-  RecorderOptions options;
-  options.path = out;
-  options.queue_events = kept.size() + 1;  // the whole log queued at once: nothing dropped
-  options.queue_bytes = std::numeric_limits<std::size_t>::max();
-  Recorder recorder(options);  // the logger's own writer
-  for (const Kept& e : kept) {
-    if (!recorder.push(e.channel, e.bytes.data(), e.bytes.size(), e.receive_utime)) throw std::runtime_error("queue full");
-  }
-  recorder.stop();
+  test::writeEvents(out, kept);  // the logger's own writer
   std::cout << "log_without: removed " << removed << " " << channel << (by_seq ? " seq " + std::to_string(seq) : "")
             << " message(s), kept " << kept.size() << "\n";
-  if (recorder.stats().write_errors > 0) throw std::runtime_error("cannot write " + out);
   return removed > 0 ? 0 : 1;
 }
 
