@@ -9,7 +9,7 @@
 #include <cmath>
 #include <iostream>
 #include <set>
-#include <sstream>
+#include <utility>
 #include <vector>
 
 #include "sdlqr/messages/channels.hpp"
@@ -26,13 +26,6 @@ int64_t wallUtime() {
   timespec now{};
   clock_gettime(CLOCK_REALTIME, &now);
   return static_cast<int64_t>(now.tv_sec) * 1'000'000 + now.tv_nsec / 1000;
-}
-
-// A mark as the caller wrote it: 6 -> "6", 8.5 -> "8.5".
-std::string text(double seconds) {
-  std::ostringstream out;
-  out << seconds;
-  return out.str();
 }
 
 bool isHeartbeat(const std::string& channel) {
@@ -66,12 +59,12 @@ int waitForHeartbeats(bus::Node& bus, const std::string& names, double timeout_s
   return 1;
 }
 
-// --at-sim-time: prints "sim time S" as soon as the simulation clock (SIM_CLOCK of this vehicle)
-// reaches each mark S, then exits 0; 1 when the clock has not reached them after timeout_s of wall
-// time. A test injects its faults at these lines, on the flight's own time: a machine that stalls
-// for seconds stalls the simulation with it, so a fault never lands late in the flight.
+// --at-sim-time: prints "sim time S" (S as given) as soon as the simulation clock (SIM_CLOCK of this
+// vehicle) reaches each mark, then exits 0; 1 when the clock has not reached them after timeout_s
+// of wall time. A test injects its faults at these lines, on the flight's own time: a machine that
+// stalls for seconds stalls the simulation with it, so a fault never lands late in the flight.
 int printSimTimeMarks(bus::Node& bus, const std::string& list, double timeout_s) {
-  std::vector<double> marks;
+  std::vector<std::pair<double, std::string>> marks;  // seconds, as written
   for (size_t start = 0; start < list.size();) {
     const size_t comma = std::min(list.find(',', start), list.size());
     const std::string text = list.substr(start, comma - start);
@@ -81,17 +74,17 @@ int printSimTimeMarks(bus::Node& bus, const std::string& list, double timeout_s)
       mark = std::stod(text, &used);
     } catch (const std::exception&) {
     }
-    if (used != text.size() || !(mark >= 0.0) || (!marks.empty() && mark <= marks.back())) {
+    if (used != text.size() || !(mark >= 0.0) || (!marks.empty() && mark <= marks.back().first)) {
       throw std::invalid_argument("--at-sim-time: expected increasing seconds separated by commas, got '" + list + "'");
     }
-    marks.push_back(mark);
+    marks.emplace_back(mark, text);
     start = comma + 1;
   }
   if (marks.empty()) throw std::invalid_argument("--at-sim-time: expected seconds separated by commas");
   size_t next = 0;
   bus.subscribe<sim_clock_t>(channel::kSimClock, [&](const sim_clock_t& clock) {
-    for (; next < marks.size() && static_cast<double>(clock.utime) >= marks[next] * 1e6; ++next) {
-      std::cout << "sim time " << text(marks[next]) << std::endl;
+    for (; next < marks.size() && static_cast<double>(clock.utime) >= marks[next].first * 1e6; ++next) {
+      std::cout << "sim time " << marks[next].second << std::endl;
     }
   }, 16);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
@@ -100,7 +93,7 @@ int printSimTimeMarks(bus::Node& bus, const std::string& list, double timeout_s)
   bus.shutdown();
   if (next == marks.size()) return 0;
   std::cerr << "sdlqr-top: the simulation clock on " << bus.channel(channel::kSimClock) << " did not reach "
-            << text(marks[next]) << " s within " << timeout_s << " s\n";
+            << marks[next].second << " s within " << timeout_s << " s\n";
   return 1;
 }
 

@@ -23,7 +23,6 @@ rm -rf "$work"
 mkdir -p "$work"
 log="$work/flight.lcmlog"
 
-now_us() { date +%s%6N; }
 restart_at=$(awk -v a="$kill_at" -v d="$down_for" 'BEGIN { print a + d }')
 sim_time_marks "$build" "$kill_at,$restart_at"
 "$root/scripts/launch" --build "$build" --log "$log" --without "$name" "$scenario" > "$work/launch.out" 2>&1 &
@@ -33,11 +32,11 @@ pid=$!
 abort() { echo "process_outage: $*"; cat "$work/launch.out"; kill -TERM "$launcher" "$pid" 2>/dev/null; stop_sim_time; wait; exit 1; }
 wait_sim_time "$kill_at" || abort "no kill: the flight never reached $kill_at s"
 kill -0 "$pid" 2>/dev/null || { cat "$work/$name.1.out"; abort "$name died on its own"; }
-kill_us=$(now_us)
+now_us kill_us
 kill -KILL "$pid"
 wait "$pid" 2>/dev/null
 wait_sim_time "$restart_at" || abort "no restart: the flight never reached $restart_at s"
-restart_us=$(now_us)
+now_us restart_us
 "$binary" --config "$config" > "$work/$name.2.out" 2>&1 &
 pid=$!
 wait "$launcher"

@@ -19,8 +19,12 @@ echo "$killed_pid" >"$work/killed.pid"  # its heartbeats in the flight's log say
 # The kill at 6 s of simulation time, hovering (tests/support/sim_time.sh).
 sim_time_marks "$build" 6
 (
-  wait_sim_time 6 && date +%s%6N >"$work/killed.utime"
-  kill -9 "$killed_pid"
+  if wait_sim_time 6; then
+    now_us killed_at
+    kill -9 "$killed_pid"
+    echo "$killed_at" >"$work/killed.utime"
+  fi
+  kill -9 "$killed_pid" 2>/dev/null
 ) &
 killer_pid=$!
 
