@@ -1,5 +1,5 @@
 // sdlqr-sim: the plant on the bus. Paces the simulator's core (sim/sim_core.hpp) against the wall
-// clock by --rate and binds MOTOR_CMD and DISTURBANCE to it.
+// clock by --rate and binds the bus to its ports (MOTOR_CMD, DISTURBANCE).
 
 #include <cmath>
 #include <iostream>
@@ -33,12 +33,7 @@ int main(int argc, char** argv) {
     SimCore core(vehicle, params, stress);
 
     bus::Node node("sdlqr-sim", options.process, core.health());
-    bus::CoreBinding<SimCore> bus(node, core);
-    // Every motor command is checked and counted, the newest applies: a queue of one kept the
-    // oldest of each batch the bus read and dropped the rest (Node::drainInbox), 11,315 of a 52 s
-    // flight on a busy machine, among them a hostile NaN command the sim never judged.
-    bus.bind(&SimCore::onMotorCommand, 8);
-    bus.bind(&SimCore::onDisturbance, 16);  // every request matters: they queue, not replace
+    bus::CoreBinding<SimCore> bus(node, core);  // its ports: SimCore::inputs()
     std::cerr << "sdlqr-sim: " << params.physics_rate_hz << " Hz physics, rate x" << options.rate << ", seed "
               << params.seed << ", channel prefix '" << options.process.vehicle << "'\n";
     node.publishHeartbeat();
