@@ -8,7 +8,6 @@
 #include "sdlqr/bus/paced_loop.hpp"
 #include "sdlqr/config/config.hpp"
 #include "sdlqr/config/print_config.hpp"
-#include "sdlqr/mission/scenario.hpp"
 #include "sdlqr/sim/sim_cli.hpp"
 #include "sdlqr/sim/sim_core.hpp"
 
@@ -29,7 +28,7 @@ int main(int argc, char** argv) {
     }
     // The scenario's simulated world (plant mismatch, wind, airborne start, throw), if one is named.
     const sim::SimStress stress =
-        options.scenario_path.empty() ? sim::SimStress() : mission::Scenario::load(options.scenario_path).sim;
+        options.scenario_path.empty() ? sim::SimStress() : sim::SimStress::loadFromScenario(options.scenario_path);
     SimCore core(vehicle, params, stress);
 
     bus::Node node("sdlqr-sim", options.process, core.health());
