@@ -1,0 +1,31 @@
+# Sourced by the view's tests (after tests/support/prerequisite.sh).
+
+# Node and the pinned npm packages; missing: skipped here, failed with CI=true.
+require_npm() {  # ROOT
+  command -v node >/dev/null || missing_prerequisite node "Debian package nodejs (./sdlqr setup)"
+  local package
+  for package in puppeteer-core @foxglove/ws-protocol @foxglove/schemas @mcap/core ws; do
+    [ -d "$1/node_modules/$package" ] || missing_prerequisite "npm package $package" "./sdlqr setup runs npm ci"
+  done
+}
+
+# And Debian's Chromium for the page.
+require_browser_and_npm() {  # ROOT
+  require_npm "$1"
+  [ -x "${SDLQR_CHROMIUM:-/usr/bin/chromium}" ] || missing_prerequisite chromium "Debian package chromium (./sdlqr setup)"
+}
+
+# Waits up to 10 s until something listens on 127.0.0.1:PORT.
+wait_for_port() {  # PORT
+  local _
+  for _ in $(seq 100); do
+    (exec 3<>"/dev/tcp/127.0.0.1/$1") 2>/dev/null && return 0
+    sleep 0.1
+  done
+  return 1
+}
+
+# User + system CPU ticks (1/100 s) of a process so far.
+cpu_ticks() {  # PID
+  awk '{ sub(/.*\) /, ""); print $12 + $13 }' "/proc/$1/stat"
+}
