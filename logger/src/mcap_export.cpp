@@ -132,22 +132,14 @@ class McapExporter {
 McapExportResult exportMcap(const McapExportOptions& options) {
   LogReader reader(options.log_path);
   LogEvent event;
-  bool have_event = reader.next(&event);
-  if (!have_event) {
-    throw LogError("'" + options.log_path + "' holds no LCM event" +
-                   std::string(reader.status().file_bytes == 0 ? " (empty file)" : " (not an LCM event log?)"));
-  }
+  readFirstEvent(reader, &event);
   std::ofstream file(options.mcap_path, std::ios::binary | std::ios::trunc);
   if (!file) throw std::runtime_error("cannot write '" + options.mcap_path + "'");
   McapExporter exporter(file, options.chunk_size);
-  int next_report = 10;
-  const int64_t file_bytes = std::max<int64_t>(1, reader.status().file_bytes);
-  for (; have_event; have_event = reader.next(&event)) {
+  ReadProgress progress(options.progress);
+  for (bool have_event = true; have_event; have_event = reader.next(&event)) {
     exporter.onEvent(event);
-    while (options.progress && next_report <= 100 && reader.position() * 100 >= next_report * file_bytes) {
-      options.progress(next_report, reader.status().events);
-      next_report += 10;
-    }
+    progress.update(reader);
   }
   McapExportResult result = exporter.finish(reader.status());
   file.close();

@@ -7,11 +7,8 @@ set -uo pipefail
 build="$1" work="$2" log="$3" mode="$4"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "$here/../../.." && pwd)"
-source "$root/tests/support/prerequisite.sh"
 source "$here/view_support.sh"
-require_npm "$root"
-rm -rf "$work" && mkdir -p "$work"
-[ -s "$log" ] || { echo "FAIL: no log $log (its fixture failed?)"; exit 1; }
+begin_view_test "$root" "$work" npm "$log"
 input="$log"
 if [ "$mode" = torn ]; then
   input="$work/torn.lcmlog"

@@ -1,4 +1,13 @@
-# Sourced by the view's tests (after tests/support/prerequisite.sh).
+# Sourced by the view's tests: begin_view_test sources tests/support/prerequisite.sh itself.
+
+# Every view test's start: its prerequisites (needs: npm, or browser for Chromium too; missing:
+# skipped here, failed with CI=true), an empty WORK folder, and the LOG it reads, when it reads one.
+begin_view_test() {  # ROOT WORK npm|browser [LOG]
+  source "$1/tests/support/prerequisite.sh"
+  if [ "$3" = browser ]; then require_browser_and_npm "$1"; else require_npm "$1"; fi
+  rm -rf "$2" && mkdir -p "$2"
+  if [ $# -ge 4 ] && [ ! -s "$4" ]; then echo "FAIL: no log $4 (its fixture failed?)"; exit 1; fi
+}
 
 # Node and the pinned npm packages; missing: skipped here, failed with CI=true.
 require_npm() {  # ROOT
