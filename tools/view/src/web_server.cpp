@@ -222,8 +222,10 @@ void WebServer::Impl::onTick() {
 }
 
 std::size_t WebServer::Impl::buffered(ClientId id) {
+  const auto it = handles.find(id);
+  if (it == handles.end()) return 0;
   websocketpp::lib::error_code ec;
-  Server::connection_ptr con = server.get_con_from_hdl(handles[id], ec);
+  Server::connection_ptr con = server.get_con_from_hdl(it->second, ec);
   return ec ? 0 : con->get_buffered_amount();
 }
 
