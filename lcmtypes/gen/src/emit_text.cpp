@@ -75,6 +75,7 @@ std::vector<GeneratedHeader> emitAll(const std::vector<LcmStruct>& types, const 
       {"convert.hpp", emitConvertHeader(model, source_note)},
       {"channels.hpp", emitChannelsHeader(model, source_note)},
       {"outbox.hpp", emitOutboxHeader(model, source_note)},
+      {"json_schemas.hpp", emitJsonSchemasHeader(types, source_note)},
   };
 }
 

@@ -9,6 +9,7 @@
 //   convert.hpp       fromLcm / toLcm between lcm-gen classes and plain structs
 //   channels.hpp      each type's channel (@channel): names, streams, split-layout ports, traits
 //   outbox.hpp        Outbox: one publish overload per type with a channel (no LCM)
+//   json_schemas.hpp  the JSON Schema of each type's JSON encoding (no LCM)
 
 #include <string>
 #include <vector>
@@ -34,7 +35,13 @@ std::string emitWireFitsHeader(const std::vector<LcmStruct>& types, const std::s
 std::string emitChannelsHeader(const PlainModel& model, const std::string& source_note);
 std::string emitOutboxHeader(const PlainModel& model, const std::string& source_note);
 
-// All eight, in the order above.
+std::string emitJsonSchemasHeader(const std::vector<LcmStruct>& types, const std::string& source_note);
+
+// The JSON Schema (draft-07) of one type's JSON encoding, and its name "<package>.<type>".
+std::string jsonSchemaText(const LcmStruct& type);
+std::string jsonSchemaName(const LcmStruct& type);
+
+// All nine, in the order above.
 std::vector<GeneratedHeader> emitAll(const std::vector<LcmStruct>& types, const std::string& source_note);
 
 // "<package path>/lcmtypes/generated/<name>", the include path of a generated header.
