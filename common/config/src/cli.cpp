@@ -164,7 +164,7 @@ void addProcessOptions(ArgParser& parser, ProcessOptions* options) {
 void addBusLayoutOption(ArgParser& parser, ProcessOptions* options) {
   parser.addOption("--bus-layout", &options->bus_layout, "single|split",
                    "split (default): high-rate channels on ports of their own above the --lcm-url port;\n"
-                   "single: every channel on the --lcm-url port (README, Bus layout)");
+                   "single: every channel on the --lcm-url port (docs/architecture.md §2)");
 }
 
 int runMain(const std::string& program, const std::function<int()>& body) {
