@@ -10,12 +10,15 @@
 #include "lcm_decode.hpp"
 #include "sdlqr/logger/channel_types.hpp"
 #include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
-#include "sdlqr/logger/csv_row.hpp"
+#include "sdlqr/tables/csv_row.hpp"
 #include "sdlqr/logger/log_naming.hpp"
 #include "sdlqr/logger/log_reader.hpp"
 #include "sdlqr/bus/convert.hpp"
 
 namespace sdlqr::logger {
+
+using tables::CsvWriter;
+using tables::writeCsvRow;
 
 namespace {
 

@@ -5,9 +5,14 @@
 #include <limits>
 #include <set>
 
-#include "sdlqr/logger/json_document.hpp"
+#include "sdlqr/tables/json_document.hpp"
 
 namespace sdlqr::logger {
+
+using tables::describe;
+using tables::JsonDocument;
+using tables::toJson;
+using tables::writeJsonDocument;
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include "sdlqr/batch/runner.hpp"
 #include "sdlqr/batch/summary.hpp"
 #include "sdlqr/config/cli.hpp"
-#include "sdlqr/logger/csv.hpp"
+#include "sdlqr/tables/csv.hpp"
 
 namespace sdlqr::batch {
 namespace {
@@ -68,7 +68,7 @@ int refly(const BatchContext& context, int flight, const std::string& controller
     std::string batch_line;
     {
       std::ostringstream text;
-      logger::CsvWriter csv(text);
+      tables::CsvWriter csv(text);
       for (const std::string& cell : r) csv.name(cell);
       csv.endRow();
       batch_line = text.str();

@@ -21,7 +21,7 @@
 #include "sdlqr/calibrate/calibration.hpp"
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/imu_t.hpp"
-#include "sdlqr/logger/statistics.hpp"
+#include "sdlqr/tables/statistics.hpp"
 
 namespace sdlqr::calibrate {
 namespace {
@@ -145,7 +145,7 @@ int run(int argc, char** argv) {
   kill(echo, SIGTERM);
   waitpid(echo, nullptr, 0);
 
-  const logger::Distribution rtt = logger::describe(m.rtt_us);
+  const tables::Distribution rtt = tables::describe(m.rtt_us);
   Calibration c;
   c.echo_rate_hz = rate_hz;
   c.pings = m.pings;

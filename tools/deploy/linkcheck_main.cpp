@@ -40,7 +40,7 @@ void printBandwidth(const logger::FlightLog& log) {
   }
 }
 
-void printDistribution(const char* what, const logger::Distribution& d) {
+void printDistribution(const char* what, const tables::Distribution& d) {
   std::printf("%s: %lld pairs, median %.0f us, p99 %.0f us, max %.0f us\n", what, static_cast<long long>(d.count), d.median,
               d.p99, d.max);
 }

@@ -24,10 +24,10 @@
 #include <vector>
 
 #include "sdlqr/logger/channel_types.hpp"
-#include "sdlqr/logger/csv.hpp"
+#include "sdlqr/tables/csv.hpp"
 #include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
 #include "sdlqr/lcmtypes/generated/wire_fits.hpp"
-#include "sdlqr/logger/csv_row.hpp"
+#include "sdlqr/tables/csv_row.hpp"
 #include "sdlqr/logger/decode.hpp"
 #include "sdlqr/logger/log_reader.hpp"
 #include "sdlqr/logger/recorder.hpp"
@@ -36,6 +36,7 @@
 namespace {
 
 using namespace sdlqr::logger;
+using namespace sdlqr::tables;
 namespace fs = std::filesystem;
 
 using sdlqr::test::RecordedEvent;

@@ -13,7 +13,7 @@
 
 #include "leaf_support.hpp"
 #include "sdlqr/foxglove/lcm_json.hpp"
-#include "sdlqr/logger/csv_row.hpp"
+#include "sdlqr/tables/csv_row.hpp"
 #include "sdlqr/replay/series_comparison.hpp"
 #include "sdlqr_probe/lcmtypes/generated/convert.hpp"
 #include "sdlqr_probe/lcmtypes/generated/json_schemas.hpp"
@@ -94,17 +94,17 @@ TEST(NewField, TheCsvExportHasItsColumnsAndReadsThemBack) {
   const auto at = std::find(columns.begin(), columns.end(), "wind[1] [m/s]");
   ASSERT_NE(at, columns.end());
   std::ostringstream text;
-  sdlqr::logger::CsvWriter writer(text);
+  sdlqr::tables::CsvWriter writer(text);
   const state_estimate_t m = toLcm(estimateWithWind());
-  sdlqr::logger::writeCsvRow(writer, m);
+  sdlqr::tables::writeCsvRow(writer, m);
   std::istringstream in(text.str());
   std::vector<std::string> cells;
   std::string error;
-  ASSERT_TRUE(sdlqr::logger::readCsvRecord(in, &cells, &error)) << error;
+  ASSERT_TRUE(sdlqr::tables::readCsvRecord(in, &cells, &error)) << error;
   ASSERT_EQ(cells.size(), columns.size());
   EXPECT_EQ(cells[static_cast<std::size_t>(at - columns.begin())], "-1.25");
   state_estimate_t back{};
-  ASSERT_TRUE(sdlqr::logger::readCsvRow(cells, back, &error)) << error;
+  ASSERT_TRUE(sdlqr::tables::readCsvRow(cells, back, &error)) << error;
   EXPECT_EQ(encode(back), encode(m));
 
   const sdlqr::lcmtypes::TypeDescriptor& rows = sdlqr::lcmtypes::LcmFields<trajectory_t>::type;

@@ -8,10 +8,10 @@
 #include <random>
 #include <sstream>
 
-#include "sdlqr/logger/csv.hpp"
-#include "sdlqr/logger/json_document.hpp"
+#include "sdlqr/tables/csv.hpp"
+#include "sdlqr/tables/json_document.hpp"
 
-namespace sdlqr::logger {
+namespace sdlqr::tables {
 namespace {
 
 uint64_t bitsOf(double v) {
@@ -165,4 +165,4 @@ TEST(Json, ReadsObjectsAndReportsErrors) {
 }
 
 }  // namespace
-}  // namespace sdlqr::logger
+}  // namespace sdlqr::tables

@@ -9,12 +9,12 @@
 
 #include "sdlqr/messages/channels.hpp"
 #include "sdlqr/logger/channel_types.hpp"
-#include "sdlqr/logger/csv.hpp"
+#include "sdlqr/tables/csv.hpp"
 #include "sdlqr/logger/decode.hpp"
 #include "sdlqr/logger/flight_log.hpp"
 #include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
 #include "sdlqr/lcmtypes/generated/wire_fits.hpp"
-#include "sdlqr/logger/csv_row.hpp"
+#include "sdlqr/tables/csv_row.hpp"
 #include "sdlqr/logger/log_export.hpp"
 #include "sdlqr/logger/log_reader.hpp"
 #include "sdlqr/bus/convert.hpp"
@@ -22,6 +22,7 @@
 
 namespace sdlqr::logger {
 namespace {
+using namespace ::sdlqr::tables;
 
 namespace fs = std::filesystem;
 using test::encode;

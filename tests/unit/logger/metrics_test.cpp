@@ -5,12 +5,13 @@
 #include <cmath>
 #include <sstream>
 
-#include "sdlqr/logger/json_document.hpp"
+#include "sdlqr/tables/json_document.hpp"
 #include "sdlqr/logger/metrics.hpp"
-#include "sdlqr/logger/statistics.hpp"
+#include "sdlqr/tables/statistics.hpp"
 
 namespace sdlqr::logger {
 namespace {
+using namespace ::sdlqr::tables;
 
 TEST(Statistics, PercentilesInterpolateLikeNumpy) {
   std::vector<double> values;

@@ -9,12 +9,13 @@
 #include "sdlqr/logger/decode.hpp"
 #include "sdlqr/lcmtypes/generated/lcm_fields.hpp"
 #include "sdlqr/lcmtypes/generated/wire_fits.hpp"
-#include "sdlqr/logger/csv_row.hpp"
+#include "sdlqr/tables/csv_row.hpp"
 #include "allocation_counter.hpp"
 #include "test_support.hpp"
 
 namespace sdlqr::logger {
 namespace {
+using namespace ::sdlqr::tables;
 
 using test::encode;
 

@@ -192,12 +192,12 @@ void measureTiming(const logger::FlightLog& log, const AnalysisOptions& options,
     period.push_back(dt * 1e3);
     jitter.push_back(std::abs(dt - options.rate_cmd_period_s) * 1e3);
   }
-  report.solve_us = logger::describe(solve);
-  report.iterations = logger::describe(iterations);
-  report.rate_cmd_period_ms = logger::describe(period);
-  report.rate_cmd_jitter_ms = logger::describe(jitter);
-  report.rate_cmd_wall_jitter_us = logger::describe(wallJitterUs(log, report));
-  report.state_to_command_us = logger::describe(stateToCommandLatency(log));
+  report.solve_us = tables::describe(solve);
+  report.iterations = tables::describe(iterations);
+  report.rate_cmd_period_ms = tables::describe(period);
+  report.rate_cmd_jitter_ms = tables::describe(jitter);
+  report.rate_cmd_wall_jitter_us = tables::describe(wallJitterUs(log, report));
+  report.state_to_command_us = tables::describe(stateToCommandLatency(log));
   report.nonfinite = countNonFinite(log.state_estimate) + countNonFinite(log.rate_command) + countNonFinite(log.gains);
 }
 

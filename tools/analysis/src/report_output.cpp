@@ -5,14 +5,14 @@
 
 #include "sdlqr/analysis/criteria.hpp"
 #include "sdlqr/analysis/flight_report.hpp"
-#include "sdlqr/logger/json_document.hpp"
+#include "sdlqr/tables/json_document.hpp"
 
 namespace sdlqr::analysis {
 
 namespace {
 
-using logger::JsonDocument;
-using logger::toJson;
+using tables::JsonDocument;
+using tables::toJson;
 
 JsonDocument vec3(const Vec3& v) { return JsonDocument::array({v[0], v[1], v[2]}); }
 
@@ -180,7 +180,7 @@ void writeJson(const FlightReport& r, std::ostream& out) {
   json["touchdown_speed_mps"] = r.touchdown_speed;
   json["crashed"] = r.crashed;
   addChecks(json, r);
-  logger::writeJsonDocument(out, json);
+  tables::writeJsonDocument(out, json);
   out << "\n";
 }
 

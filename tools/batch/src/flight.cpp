@@ -8,7 +8,7 @@
 
 #include "sdlqr/analysis/criteria.hpp"
 #include "sdlqr/config/print_config.hpp"
-#include "sdlqr/logger/csv.hpp"
+#include "sdlqr/tables/csv.hpp"
 
 namespace sdlqr::batch {
 
@@ -110,7 +110,7 @@ FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std
 std::string row(const BatchContext& context, const FlightDraw& draw, const std::string& controller,
                 const analysis::FlightReport& report) {
   std::ostringstream text;
-  logger::CsvWriter csv(text);
+  tables::CsvWriter csv(text);
   csv.integer(draw.flight);
   csv.name(controller);
   csv.integer(draw.seed);

@@ -12,7 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "sdlqr/logger/csv.hpp"
+#include "sdlqr/tables/csv.hpp"
 
 #include "file_text.hpp"
 
@@ -32,7 +32,7 @@ namespace {
 
 std::string headerLine(const std::vector<std::string>& header) {
   std::ostringstream text;
-  logger::CsvWriter csv(text);
+  tables::CsvWriter csv(text);
   for (const std::string& h : header) csv.name(h);
   csv.endRow();
   return text.str();
@@ -45,7 +45,7 @@ std::vector<std::vector<std::string>> records(const std::string& text, const std
   std::vector<std::vector<std::string>> out;
   std::vector<std::string> cells;
   std::string error;
-  while (logger::readCsvRecord(in, &cells, &error)) out.push_back(cells);
+  while (tables::readCsvRecord(in, &cells, &error)) out.push_back(cells);
   if (!error.empty() && !drop_cut_tail) throw std::runtime_error(path + ": " + error);
   return out;
 }

@@ -7,7 +7,7 @@
 #include "sdlqr/batch/results.hpp"
 #include "sdlqr/compare/compare_metrics.hpp"
 #include "sdlqr/compare/compare_report.hpp"
-#include "sdlqr/logger/csv.hpp"
+#include "sdlqr/tables/csv.hpp"
 
 namespace sdlqr::compare {
 
@@ -39,7 +39,7 @@ std::string failedChecks(const analysis::FlightReport& report) {
 
 std::string flightsCsv(const CompareResult& result) {
   std::ostringstream text;
-  logger::CsvWriter csv(text);
+  tables::CsvWriter csv(text);
   for (const char* name : {"experiment", "controller", "seed", "pass", "checks_passed", "checks", "failed_checks"}) {
     csv.name(name);
   }
@@ -63,7 +63,7 @@ std::string flightsCsv(const CompareResult& result) {
 
 std::string sweepCsv(const CompareResult& result) {
   std::ostringstream text;
-  logger::CsvWriter csv(text);
+  tables::CsvWriter csv(text);
   for (const char* name : {"controller", "speed [m/s]", "result", "flights", "path_error_rms [m]",
                            "path_error_max [m]", "max_tilt_deg [deg]", "failed_checks"}) {
     csv.name(name);
@@ -87,7 +87,7 @@ std::string sweepCsv(const CompareResult& result) {
 
 std::string trackCsv(const CompareResult& result, const std::string& experiment) {
   std::ostringstream text;
-  logger::CsvWriter csv(text);
+  tables::CsvWriter csv(text);
   for (const char* name : {"controller", "t [s]", "x [m]", "y [m]", "z [m]"}) csv.name(name);
   csv.endRow();
   for (const ExperimentFlight& f : result.flights) {
@@ -104,7 +104,7 @@ std::string trackCsv(const CompareResult& result, const std::string& experiment)
 
 std::string pathCsv(const CompareResult& result, const std::string& experiment) {
   std::ostringstream text;
-  logger::CsvWriter csv(text);
+  tables::CsvWriter csv(text);
   for (const char* name : {"segment", "x [m]", "y [m]", "z [m]"}) csv.name(name);
   csv.endRow();
   // The uploads do not depend on the controller: the first flight's.

@@ -87,7 +87,7 @@ CrossHostLatency crossHostLatency(const logger::FlightLog& controller_host, cons
       command_to_motor.push_back(static_cast<double>(*next_motor - sent->second));
     }
   }
-  return {logger::describe(std::move(state_to_command)), logger::describe(std::move(command_to_motor))};
+  return {tables::describe(std::move(state_to_command)), tables::describe(std::move(command_to_motor))};
 }
 
 LinkGap measureLinkGap(const logger::ChannelTimeline& channel, int64_t down_us, int64_t up_us) {

@@ -22,9 +22,11 @@
 #include "sdlqr/messages/messages.hpp"
 #include "sdlqr/logger/heartbeat_record.hpp"
 #include "sdlqr/logger/log_file_status.hpp"
-#include "sdlqr/logger/statistics.hpp"
+#include "sdlqr/tables/statistics.hpp"
 
 namespace sdlqr::logger {
+
+using tables::Distribution;
 
 // What the reader saw on one channel, in log order.
 struct ChannelTimeline {

@@ -16,7 +16,7 @@
 
 #include "sdlqr/batch/runner.hpp"
 #include "sdlqr/batch/summary.hpp"
-#include "sdlqr/logger/csv.hpp"
+#include "sdlqr/tables/csv.hpp"
 #include "batch_test_dir.hpp"
 
 namespace sdlqr::batch {
@@ -172,7 +172,7 @@ TEST_F(SmallBatch, AReflownFlightReproducesItsRowFromItsFiles) {
     writeFlightFiles(*context_, draw, "sdlqr", dir);
     const FlownFlight flown = fly(*context_, loadFlightFiles(dir), "sdlqr");
     std::ostringstream batch_row;
-    logger::CsvWriter csv(batch_row);
+    tables::CsvWriter csv(batch_row);
     for (const std::string& cell : reference_->table.rows[static_cast<size_t>(flight)]) csv.name(cell);
     csv.endRow();
     EXPECT_EQ(row(*context_, draw, "sdlqr", flown.report), batch_row.str()) << flight;
@@ -245,7 +245,7 @@ TEST(BatchControllers, AReflownFlightKeepsItsControllerAndItsStressors) {
   EXPECT_EQ(files.scenario.sim.wind.steady.x(), draw.values[0]);
   EXPECT_EQ(files.scenario.sim.plant.thrust_scale, draw.values[2]);
   std::ostringstream batch_row;
-  logger::CsvWriter csv(batch_row);
+  tables::CsvWriter csv(batch_row);
   for (const std::string& cell : result.table.rows[5]) csv.name(cell);  // flight 1, geometric
   csv.endRow();
   EXPECT_EQ(row(context, draw, "geometric", fly(context, files, "geometric").report), batch_row.str());

@@ -15,7 +15,7 @@
 #include "sdlqr/compare/compare_files.hpp"
 #include "sdlqr/compare/compare_metrics.hpp"
 #include "sdlqr/compare/compare_report.hpp"
-#include "sdlqr/logger/csv.hpp"
+#include "sdlqr/tables/csv.hpp"
 #include "compare_test_dir.hpp"
 
 namespace sdlqr::compare {
@@ -104,15 +104,15 @@ TEST_F(SmallComparison, FlightsCsvReadsBackToTheMetricsExactly) {
   std::istringstream in(fileText(kRunWork + "/jobs1/flights.csv"));
   std::vector<std::string> header, cells;
   std::string error;
-  ASSERT_TRUE(logger::readCsvRecord(in, &header, &error)) << error;
+  ASSERT_TRUE(tables::readCsvRecord(in, &header, &error)) << error;
   const size_t first_metric = 7;
   ASSERT_EQ(header.size(), first_metric + compareMetrics().size());
   for (const ExperimentFlight& f : result_->flights) {
-    ASSERT_TRUE(logger::readCsvRecord(in, &cells, &error)) << error;
+    ASSERT_TRUE(tables::readCsvRecord(in, &cells, &error)) << error;
     EXPECT_EQ(cells[1], f.controller);
     for (size_t m = 0; m < compareMetrics().size(); ++m) {
       double read = 0.0;
-      ASSERT_TRUE(logger::parseValue(cells[first_metric + m], read)) << cells[first_metric + m];
+      ASSERT_TRUE(tables::parseValue(cells[first_metric + m], read)) << cells[first_metric + m];
       const double value = compareMetrics()[m].of(f.report);
       if (std::isnan(value)) {
         EXPECT_TRUE(std::isnan(read)) << header[first_metric + m];

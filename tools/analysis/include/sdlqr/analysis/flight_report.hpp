@@ -20,7 +20,7 @@
 #include "sdlqr/math/types.hpp"
 #include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/logger/flight_log.hpp"
-#include "sdlqr/logger/statistics.hpp"
+#include "sdlqr/tables/statistics.hpp"
 #include "sdlqr/mission/scenario.hpp"
 
 namespace sdlqr::analysis {
@@ -148,14 +148,14 @@ struct FlightReport {
   double state_est_rate_hz = 0.0;
   double rate_cmd_rate_hz = 0.0;
   double gains_rate_hz = 0.0;
-  logger::Distribution solve_us;                 // GAINS solve_us
-  logger::Distribution iterations;               // GAINS iterations
-  logger::Distribution rate_cmd_period_ms;       // RATE_CMD utime intervals
-  logger::Distribution rate_cmd_jitter_ms;       // |interval - 10 ms| (stamps the controller set: reported only)
+  tables::Distribution solve_us;                 // GAINS solve_us
+  tables::Distribution iterations;               // GAINS iterations
+  tables::Distribution rate_cmd_period_ms;       // RATE_CMD utime intervals
+  tables::Distribution rate_cmd_jitter_ms;       // |interval - 10 ms| (stamps the controller set: reported only)
   // Airborne, at the recorder: |interval between RATE_CMDs - interval between the STATE_ESTs they
   // answer|: the controller's wall-clock period beyond its input's.
-  logger::Distribution rate_cmd_wall_jitter_us;
-  logger::Distribution state_to_command_us;      // STATE_EST -> RATE_CMD, recorder receive clock
+  tables::Distribution rate_cmd_wall_jitter_us;
+  tables::Distribution state_to_command_us;      // STATE_EST -> RATE_CMD, recorder receive clock
   Saturation saturation;
   std::vector<ProcessLoad> processes;
   std::vector<ChannelLoss> message_loss;  // every subscriber and channel with a counter

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "sdlqr/logger/flight_log.hpp"
-#include "sdlqr/logger/statistics.hpp"
+#include "sdlqr/tables/statistics.hpp"
 
 namespace sdlqr::deploy {
 
@@ -32,10 +32,10 @@ std::vector<ChannelBandwidth> channelBandwidth(const logger::FlightLog& log);
 struct CrossHostLatency {
   // [us] STATE_EST received on the controller's host -> the RATE_CMD computed from it received
   // on the lowlevel's host (the controller's work plus the hop).
-  logger::Distribution state_to_command_us;
+  tables::Distribution state_to_command_us;
   // [us] RATE_CMD received on the controller's host -> the first MOTOR_CMD received on the
   // lowlevel's host after that RATE_CMD reached it (the hop plus the wait for the next IMU tick).
-  logger::Distribution command_to_motor_us;
+  tables::Distribution command_to_motor_us;
 };
 CrossHostLatency crossHostLatency(const logger::FlightLog& controller_host, const logger::FlightLog& lowlevel_host);
 

@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "sdlqr/lcmtypes/fields.hpp"
-#include "sdlqr/logger/csv.hpp"
+#include "sdlqr/tables/csv.hpp"
 
-namespace sdlqr::logger {
+namespace sdlqr::tables {
 
 namespace csv_row {
 
@@ -141,4 +141,4 @@ bool readCsvRow(const std::vector<std::string>& cells, LcmType& message, std::st
   return reader.ok();
 }
 
-}  // namespace sdlqr::logger
+}  // namespace sdlqr::tables

@@ -9,9 +9,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sdlqr/logger/statistics.hpp"
+#include "sdlqr/tables/statistics.hpp"
 
-namespace sdlqr::logger {
+namespace sdlqr::tables {
 
 using JsonDocument = nlohmann::ordered_json;
 
@@ -28,4 +28,4 @@ bool parseJson(std::string_view text, JsonDocument* out, std::string* error);
 // A number as the CSV export writes it (integers in decimal, others "%.17g", NaN, Infinity).
 std::string numberText(const JsonDocument& number);
 
-}  // namespace sdlqr::logger
+}  // namespace sdlqr::tables

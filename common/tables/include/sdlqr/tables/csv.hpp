@@ -17,9 +17,9 @@
 #include <type_traits>
 #include <vector>
 
-#include "sdlqr/logger/json_document.hpp"
+#include "sdlqr/tables/json_document.hpp"
 
-namespace sdlqr::logger {
+namespace sdlqr::tables {
 
 class CsvWriter {
  public:
@@ -101,4 +101,4 @@ void ensureSize(std::vector<T>& container, std::size_t size) {
 template <class T, std::size_t N>
 void ensureSize(T (&)[N], std::size_t) {}
 
-}  // namespace sdlqr::logger
+}  // namespace sdlqr::tables

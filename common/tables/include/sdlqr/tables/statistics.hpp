@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace sdlqr::logger {
+namespace sdlqr::tables {
 
 struct Distribution {
   int64_t count = 0;
@@ -22,4 +22,4 @@ Distribution describe(std::vector<double> values);
 // p in [0, 100]; `sorted` ascending and not empty.
 double percentileOfSorted(const std::vector<double>& sorted, double p);
 
-}  // namespace sdlqr::logger
+}  // namespace sdlqr::tables

@@ -1,11 +1,11 @@
-#include "sdlqr/logger/json_document.hpp"
+#include "sdlqr/tables/json_document.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
-namespace sdlqr::logger {
+namespace sdlqr::tables {
 
 namespace {
 
@@ -83,4 +83,4 @@ JsonDocument toJson(const Distribution& d) {
   return {{"count", d.count}, {"mean", d.mean}, {"min", d.min}, {"median", d.median}, {"p99", d.p99}, {"max", d.max}};
 }
 
-}  // namespace sdlqr::logger
+}  // namespace sdlqr::tables

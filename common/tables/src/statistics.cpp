@@ -1,10 +1,10 @@
-#include "sdlqr/logger/statistics.hpp"
+#include "sdlqr/tables/statistics.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-namespace sdlqr::logger {
+namespace sdlqr::tables {
 
 double percentileOfSorted(const std::vector<double>& sorted, double p) {
   const double rank = p / 100.0 * static_cast<double>(sorted.size() - 1);
@@ -33,4 +33,4 @@ Distribution describe(std::vector<double> values) {
   return d;
 }
 
-}  // namespace sdlqr::logger
+}  // namespace sdlqr::tables

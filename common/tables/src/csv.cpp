@@ -1,4 +1,4 @@
-#include "sdlqr/logger/csv.hpp"
+#include "sdlqr/tables/csv.hpp"
 
 #include <cerrno>
 #include <cinttypes>
@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <limits>
 
-namespace sdlqr::logger {
+namespace sdlqr::tables {
 
 namespace {
 
@@ -249,4 +249,4 @@ bool checkArray(const JsonDocument& value, int expected_size, std::string_view f
   return false;
 }
 
-}  // namespace sdlqr::logger
+}  // namespace sdlqr::tables
