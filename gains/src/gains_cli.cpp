@@ -3,10 +3,12 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace sdlqr::gains {
 
@@ -36,18 +38,12 @@ std::vector<double> parseNumberList(const std::string& text, const std::string& 
   return values;
 }
 
-std::string number(double value) {
-  if (!std::isfinite(value)) return "null";
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.17g", value);
-  return buffer;
-}
-
+// A non-finite number is written as null (nlohmann-json's dump does so).
 template <typename Derived>
-std::string array(const Eigen::MatrixBase<Derived>& v) {
-  std::string out = "[";
-  for (Eigen::Index i = 0; i < v.size(); ++i) out += (i ? ", " : "") + number(v(i));
-  return out + "]";
+nlohmann::ordered_json array(const Eigen::MatrixBase<Derived>& v) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) out.push_back(static_cast<double>(v(i)));
+  return out;
 }
 
 }  // namespace
@@ -76,21 +72,20 @@ const char* toString(SolveStatus status) {
 
 std::string formatGainsJson(const State& x_lin, const Input& u_lin, const LqrParams& params, const LqrResult& result,
                             double solve_us) {
-  std::string K = "[";
-  for (int row = 0; row < kInputDim; ++row) K += (row ? ", " : "") + array(result.K.row(row));
-  K += "]";
-  std::string json = "{";
-  json += "\"status\": \"" + std::string(toString(result.status)) + "\"";
-  if (result.status != SolveStatus::kOk) json += ", \"reason\": \"" + std::string(result.reason) + "\"";
-  json += ", \"method\": \"" + std::string(toString(params.method)) + "\"";
-  json += ", \"K\": " + K;
-  json += ", \"dt\": " + number(params.dt);
-  json += ", \"iterations\": " + std::to_string(result.iterations);
-  json += ", \"solve_us\": " + number(solve_us);
-  json += ", \"residual\": " + number(result.residual);
-  json += ", \"x_lin\": " + array(x_lin);
-  json += ", \"u_lin\": " + array(u_lin);
-  return json + "}";
+  nlohmann::ordered_json K = nlohmann::ordered_json::array();
+  for (int row = 0; row < kInputDim; ++row) K.push_back(array(result.K.row(row)));
+  nlohmann::ordered_json json;
+  json["status"] = toString(result.status);
+  if (result.status != SolveStatus::kOk) json["reason"] = std::string(result.reason);
+  json["method"] = toString(params.method);
+  json["K"] = std::move(K);
+  json["dt"] = params.dt;
+  json["iterations"] = result.iterations;
+  json["solve_us"] = solve_us;
+  json["residual"] = result.residual;
+  json["x_lin"] = array(x_lin);
+  json["u_lin"] = array(u_lin);
+  return json.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
 void addOnceOptions(ArgParser& parser, OnceOptions* o) {
