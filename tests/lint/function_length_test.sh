@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# function_length.py passes on the repository, and fails, naming the rule and the function, on a
+# sample whose function is 81 lines; a brace in a string or a comment does not end a function, and
+# an 80-line function passes.
+#   function_length_test.sh SOURCE_DIR WORK_DIR
+set -u
+root="$1" work="$2"
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+check="/usr/bin/python3 $here/function_length.py"
+failed=0
+if out="$($check "$root")"; then
+  echo "ok   the repository: $out"
+else
+  echo "FAIL: functions over 80 lines:"
+  echo "$out"
+  failed=1
+fi
+
+# sample LINES: a .cpp in WORK_DIR with one function `longOne` whose head to closing brace spans
+# LINES lines, with '}' inside a string and a comment on the way.
+sample() {
+  rm -rf "$work" && mkdir -p "$work/src"
+  {
+    echo 'namespace demo {'
+    echo 'int longOne(int x) {'
+    echo '  const char* brace = "}";  // } here neither'
+    for ((i = 0; i < $1 - 3; ++i)); do echo "  x += $i;"; done
+    echo '}'
+    echo 'int shortOne() { return 1; }'
+    echo '}  // namespace demo'
+  } >"$work/src/sample.cpp"
+}
+
+sample 81
+out="$($check "$work")"
+status=$?
+if [ "$status" -eq 1 ] && grep -q "^src/sample.cpp:2: function-too-long longOne is 81 lines" <<<"$out"; then
+  echo "ok   an 81-line function fails: $out"
+else
+  echo "FAIL: an 81-line function must fail naming function-too-long longOne (exit $status): $out"
+  failed=1
+fi
+sample 80
+if out="$($check "$work")"; then
+  echo "ok   an 80-line function passes"
+else
+  echo "FAIL: an 80-line function must pass: $out"
+  failed=1
+fi
+rm -rf "$work"
+exit "$failed"
