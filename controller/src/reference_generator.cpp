@@ -131,6 +131,33 @@ bool ReferenceGenerator::landedAt(const StateEstimate& estimate) {
   return static_cast<double>(estimate.utime - landed_since_utime_) * 1e-6 >= params_.landed_time;
 }
 
+// The trajectory's reference at this estimate into out; false when the guard tripped (the
+// trajectory is dropped and the generator holds where the vehicle is).
+bool ReferenceGenerator::followTrajectory(const StateEstimate& estimate, Reference& out) {
+  const trajectory::TrackingOutput& tracked =
+      tracker_.update(static_cast<double>(estimate.utime) * 1e-6, estimate.position);
+  const trajectory::GuardTrip trip =
+      trajectory::checkGuard(params_.guard, estimate.position, estimate.velocity, position(tracked.x));
+  if (trip != trajectory::GuardTrip::kNone) {
+    // Beyond the guard's bounds: stop following the reference and hold where the vehicle is.
+    ++guard_aborts_;
+    last_guard_trip_ = trip;
+    tracker_.clear();
+    hold(estimate.position, quat::yaw(orientation(tracked.x)));
+    return false;
+  }
+  out.x = tracked.x;
+  out.u = tracked.u;
+  out.mode = tracker_.mode();
+  out.index = tracked.index;
+  out.gamma = tracked.gamma;
+  out.trajectory_seq = trajectory_seq_;
+  // A GOTO or LAND after the trajectory starts from where the reference was.
+  setpoint_ = position(tracked.x);
+  yaw_ = quat::yaw(orientation(tracked.x));
+  return true;
+}
+
 bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
   const double dt = last_utime_ < 0 ? 0.0 : std::max(0.0, static_cast<double>(estimate.utime - last_utime_) * 1e-6);
   last_utime_ = estimate.utime;
@@ -164,31 +191,10 @@ bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
     case FlightPhase::kHold:
       if (recovering_) position_ref = recoveryReference(estimate);
       break;
-    case FlightPhase::kTrajectory: {
-      const trajectory::TrackingOutput& tracked =
-          tracker_.update(static_cast<double>(estimate.utime) * 1e-6, estimate.position);
-      const trajectory::GuardTrip trip =
-          trajectory::checkGuard(params_.guard, estimate.position, estimate.velocity, position(tracked.x));
-      if (trip != trajectory::GuardTrip::kNone) {
-        // Beyond the guard's bounds: stop following the reference and hold where the vehicle is.
-        ++guard_aborts_;
-        last_guard_trip_ = trip;
-        tracker_.clear();
-        hold(estimate.position, quat::yaw(orientation(tracked.x)));
-        position_ref = setpoint_;
-        break;
-      }
-      out.x = tracked.x;
-      out.u = tracked.u;
-      out.mode = tracker_.mode();
-      out.index = tracked.index;
-      out.gamma = tracked.gamma;
-      out.trajectory_seq = trajectory_seq_;
-      // A GOTO or LAND after the trajectory starts from where the reference was.
-      setpoint_ = position(tracked.x);
-      yaw_ = quat::yaw(orientation(tracked.x));
-      return true;
-    }
+    case FlightPhase::kTrajectory:
+      if (followTrajectory(estimate, out)) return true;
+      position_ref = setpoint_;  // the guard tripped: hold where the vehicle is
+      break;
     case FlightPhase::kLanding: {
       if (landing_pending_) {
         ramp_position_ = Vec3(estimate.position[0], estimate.position[1], std::max(estimate.position[2], ground_z_));

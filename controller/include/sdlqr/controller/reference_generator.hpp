@@ -52,6 +52,7 @@ class ReferenceGenerator {
   void startTakeoff(const StateEstimate& estimate, double height);
   void hold(const Vec3& position, double yaw);
   bool landedAt(const StateEstimate& estimate);
+  bool followTrajectory(const StateEstimate& estimate, Reference& out);
   void rejoin(const StateEstimate& estimate);
   Vec3 recoveryReference(const StateEstimate& estimate);
 
