@@ -21,7 +21,6 @@ PENDING = {
     ("tools/analysis/src/criteria.cpp", "makeCriteria"),
     ("tools/analysis/src/path_tracking.cpp", "analyzePathTracking"),
     ("tools/faults/faultcheck_main.cpp", "main"),
-    ("tools/faults/fuzz_publisher_main.cpp", "main"),
     ("tools/replay/replay_main.cpp", "main"),
     ("trajectory/trajectory_main.cpp", "run"),
 }

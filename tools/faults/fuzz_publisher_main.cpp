@@ -38,6 +38,30 @@ std::vector<uint8_t> defaultEncoding(std::string_view lcm_type) {
   return bytes;
 }
 
+// Every channel of the vehicle but those in skip_text (comma-separated bases), each with a
+// default encoding until one is heard.
+std::vector<Target> makeTargets(bus::Node& bus, const std::string& skip_text, double replay_age) {
+  std::vector<Target> targets;
+  for (const logger::ChannelType& channel : logger::channelTypes()) {
+    if (("," + skip_text + ",").find("," + std::string(channel.base) + ",") != std::string::npos) continue;
+    Target target(replay_age);
+    target.channel = bus.channel(channel.base);
+    target.type = lcmtypes::findType(channel.lcm_type);
+    target.latest = defaultEncoding(channel.lcm_type);
+    if (target.type == nullptr || target.latest.empty()) continue;
+    targets.push_back(std::move(target));
+  }
+  return targets;
+}
+
+void printSent(bus::Node& bus, const bus::Counters::Id (&sent_ids)[faults::kFuzzKindCount], double seconds) {
+  std::cout << "sdlqr-fuzz-publisher: sent";
+  for (int k = 0; k < faults::kFuzzKindCount; ++k) {
+    std::cout << " " << faults::toString(static_cast<faults::FuzzKind>(k)) << "=" << bus.counters().value(sent_ids[k]);
+  }
+  std::cout << " in " << seconds << " s\n";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -66,16 +90,7 @@ int main(int argc, char** argv) {
     if (seed < 0) throw std::invalid_argument("--seed: must be >= 0");
 
     bus::Node bus("sdlqr-fuzz-publisher", options);
-    std::vector<Target> targets;
-    for (const logger::ChannelType& channel : logger::channelTypes()) {
-      if (("," + skip_text + ",").find("," + std::string(channel.base) + ",") != std::string::npos) continue;
-      Target target(replay_age);
-      target.channel = bus.channel(channel.base);
-      target.type = lcmtypes::findType(channel.lcm_type);
-      target.latest = defaultEncoding(channel.lcm_type);
-      if (target.type == nullptr || target.latest.empty()) continue;
-      targets.push_back(std::move(target));
-    }
+    std::vector<Target> targets = makeTargets(bus, skip_text, replay_age);
     bus::Counters::Id sent_ids[faults::kFuzzKindCount];
     for (int k = 0; k < faults::kFuzzKindCount; ++k) {
       sent_ids[k] = bus.counters().add(std::string("fuzz.sent.") + faults::toString(static_cast<faults::FuzzKind>(k)));
@@ -122,11 +137,7 @@ int main(int argc, char** argv) {
         bus.spin(std::max(0, wait_ms));
       } while (bus.running() && Clock::now() < next);
     }
-    std::cout << "sdlqr-fuzz-publisher: sent";
-    for (int k = 0; k < faults::kFuzzKindCount; ++k) {
-      std::cout << " " << faults::toString(static_cast<faults::FuzzKind>(k)) << "=" << bus.counters().value(sent_ids[k]);
-    }
-    std::cout << " in " << seconds() << " s\n";
+    printSent(bus, sent_ids, seconds());
     bus.shutdown();
     return 0;
   });
