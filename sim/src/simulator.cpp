@@ -129,6 +129,11 @@ Wrench Simulator::wrenchOf(const Vec4& thrust, const BodyState& s, int64_t start
 StepOutput Simulator::step() {
   const int64_t start_utime = utime();
   disturbances_.expire(start_utime);
+  const PayloadDrop& drop = stress_.payload_drop;
+  if (drop.enabled() && !payload_dropped_ && start_utime >= static_cast<int64_t>(drop.at * 1e6 + 0.5)) {
+    body_properties_.mass = plant_.mass * drop.mass_scale;
+    payload_dropped_ = true;
+  }
   const double thrust_scale = thrustScale();
   wind_velocity_ = wind_.velocity();
   const auto wrench_at = [&](const BodyState& s, double tau) {

@@ -97,6 +97,7 @@ class Simulator {
   Vec3 wind_velocity_ = Vec3::Zero();
   bool on_ground_ = true;
   bool crashed_ = false;
+  bool payload_dropped_ = false;  // stress_.payload_drop has happened: body_properties_.mass is the lighter one
   int64_t truth_seq_ = 0;
 };
 
