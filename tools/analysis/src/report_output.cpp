@@ -153,6 +153,7 @@ void writeJson(const FlightReport& r, std::ostream& out) {
     json.member("path_length_m", t.path_length);
     json.member("duration_s", t.duration);
     json.member("start_s", t.start);
+    json.member("entry_time_s", t.entry_time);
     json.member("end_s", t.end);
     json.memberBool("completed", t.completed);
     json.member("completion_time_s", t.completion_time);
@@ -339,9 +340,9 @@ void writePulls(const FlightReport& r, std::ostream& out) {
 void writeTrajectories(const FlightReport& r, std::ostream& out) {
   char line[512];
   for (const PathTrackingReport& t : r.trajectories) {
-    std::snprintf(line, sizeof line, "  %s (%s, %s, %d samples, %.2f m per lap): %s, %.2f laps\n", t.label.c_str(),
+    std::snprintf(line, sizeof line, "  %s (%s, %s, %d samples, %.2f m per lap): %s%s, %.2f laps\n", t.label.c_str(),
                   t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial", t.closed ? "closed" : "open",
-                  t.samples, t.path_length,
+                  t.samples, t.path_length, t.entry_time > 0.0 ? format("entered in %.2f s, ", t.entry_time).c_str() : "",
                   t.completed ? format("completed in %.2f s", t.completion_time).c_str()
                               : format("not completed (%.2f m left)", t.remaining).c_str(),
                   t.laps);

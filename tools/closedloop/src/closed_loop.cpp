@@ -29,7 +29,8 @@ ClosedLoop::ClosedLoop(const StackConfig& config, const Plant& plant, const miss
       lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity, config.faults, config.validation),
       controller_(config.lqr, config.controller, config.faults, config.validation),
       gains_(config.lqr, config.gains, config.faults, config.validation),
-      mission_(scenario, config.trajectory, config.lqr, missionOptions(command_resend_s)) {}
+      mission_(scenario, config.trajectory, {config.lqr, config.controller.guard, config.controller.transition},
+               missionOptions(command_resend_s)) {}
 
 bool ClosedLoop::step() {
   if (mission_.finished()) return false;
