@@ -128,7 +128,11 @@ TEST_F(SmallComparison, TheReportHasEveryTable) {
   for (const std::string part : {"## Summary", "## speed_sweep: short_circle", "## short_hover", "## short_circle",
                                  "path_error_rms_max [m]",
                                  "## Where sdlqr is not the best", "| `sdlqr` |", "| `geometric` |",
-                                 "jump_settle_time_max [s]", "pull_return_time_max [s]", "| 0.5 m/s |"}) {
+                                 "jump_settle_time_max [s]", "pull_return_time_max [s]", "| 0.5 m/s |",
+                                 // the headline (headline.hpp): per vehicle and law, the fastest speed within the
+                                 // criteria, and sdlqr against the others
+                                 "## Headline", "| quad255 | `sdlqr` |", "| quad255 | `geometric` |",
+                                 "- sdlqr vs `geometric`:"}) {
     EXPECT_NE(report.find(part), std::string::npos) << part;
   }
   // A metric that applies to no flight of the experiment has no column.
