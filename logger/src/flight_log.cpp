@@ -57,6 +57,26 @@ void decode(MessageType type, const LogEvent& e, FlightLog& log, ChannelTimeline
 
 }  // namespace
 
+void FlightLog::clear() {
+  vehicle.clear();
+  file = LogFileStatus();
+  imu.clear();
+  vio_pose.clear();
+  state_estimate.clear();
+  rate_command.clear();
+  motor_command.clear();
+  gains.clear();
+  reference.clear();
+  trajectory.clear();
+  disturbance.clear();
+  params.clear();
+  command.clear();
+  heartbeat.clear();
+  sim_truth.clear();
+  sim_clock.clear();
+  channels.clear();
+}
+
 bool decodeMessage(const LogEvent& e, ImuSample* out) { return decodeAs<imu_t>(e, out); }
 bool decodeMessage(const LogEvent& e, VioPose* out) { return decodeAs<vio_pose_t>(e, out); }
 bool decodeMessage(const LogEvent& e, StateEstimate* out) { return decodeAs<state_estimate_t>(e, out); }

@@ -1,5 +1,7 @@
 #include "sdlqr/closedloop/closed_loop.hpp"
 
+#include <cmath>
+
 namespace sdlqr::closedloop {
 
 namespace {
@@ -24,12 +26,38 @@ ClosedLoop::ClosedLoop(const StackConfig& config, const mission::Scenario& scena
 ClosedLoop::ClosedLoop(const StackConfig& config, const Plant& plant, const mission::Scenario& scenario,
                        RecordOptions record, double command_resend_s)
     : record_(record),
+      duration_s_(scenario.duration),
+      truth_rate_hz_(plant.sim.truth_rate_hz),
+      imu_rate_hz_(plant.sim.imu.rate_hz),
+      estimate_period_us_(config.estimator.outputPeriodUs()),
       sim_(plant.vehicle, withSeed(plant.sim, scenario.seed), scenario.sim),
       estimator_(config.estimator),
       lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity, config.faults, config.validation),
       controller_(config.lqr, config.controller, config.faults, config.validation),
       gains_(config.lqr, config.gains, config.faults, config.validation),
-      mission_(scenario, config.trajectory, config.lqr, missionOptions(command_resend_s)) {}
+      mission_(scenario, config.trajectory, config.lqr, missionOptions(command_resend_s)) {
+  reserveRecording();
+}
+
+void ClosedLoop::reserveRecording() {
+  const auto count = [this](double rate_hz) { return static_cast<size_t>(std::ceil(duration_s_ * rate_hz)) + 1; };
+  log_.sim_truth.reserve(count(truth_rate_hz_));
+  log_.state_estimate.reserve(count(1e6 / static_cast<double>(estimate_period_us_)));
+  if (record_.imu) log_.imu.reserve(count(imu_rate_hz_));
+  if (record_.motor_command) log_.motor_command.reserve(count(imu_rate_hz_));  // one per IMU sample
+}
+
+void ClosedLoop::recordInto(logger::FlightLog&& storage) {
+  log_ = std::move(storage);
+  log_.clear();
+  reserveRecording();
+}
+
+logger::FlightLog ClosedLoop::takeLog() {
+  logger::FlightLog out = std::move(log_);
+  log_ = logger::FlightLog();
+  return out;
+}
 
 bool ClosedLoop::step() {
   if (mission_.finished()) return false;

@@ -75,6 +75,11 @@ class ClosedLoop : private Outbox {
 
   int64_t utime() const { return sim_.simulator().utime(); }
   const logger::FlightLog& log() const { return log_; }
+  // Records into `storage`'s memory (emptied first), before the first step: a caller flying
+  // flight after flight hands back the last flight's log and the next one allocates nothing.
+  void recordInto(logger::FlightLog&& storage);
+  // The recorded flight, moved out: the loop's own log is left empty.
+  logger::FlightLog takeLog();
   const sim::SimCore& sim() const { return sim_; }
   const estimator::EstimatorCore& estimator() const { return estimator_; }
   const gains::GainsCore& gains() const { return gains_; }
@@ -98,6 +103,9 @@ class ClosedLoop : private Outbox {
   void publish(const Trajectory& m) override;
   void publish(const SimClockTick& m) override;
 
+  // Room for the whole flight in the 1 kHz and 250 Hz series, so recording never reallocates.
+  void reserveRecording();
+
   template <class T>
   static void record(logger::Series<T>& series, const T& message) {
     series.messages.push_back(message);
@@ -105,6 +113,10 @@ class ClosedLoop : private Outbox {
   }
 
   RecordOptions record_;
+  double duration_s_;
+  int truth_rate_hz_;
+  int imu_rate_hz_;
+  int64_t estimate_period_us_;
   sim::SimCore sim_;
   estimator::EstimatorCore estimator_;
   lowlevel::LowlevelCore lowlevel_;
