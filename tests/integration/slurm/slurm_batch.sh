@@ -3,7 +3,8 @@
 # network namespace (one_node_cluster.sh), the batch as a job array of 4 tasks, task 2 killed
 # mid-run (kill -9 of its sdlqr-batch), which the waiter must requeue and which must continue its
 # journal; the merged flights.csv, summary.txt and batch.yaml must equal a single local run's
-# byte for byte. Negative: a merge missing a shard is refused for that reason.
+# byte for byte; a job submitted with --no-wait and collected by batch-merge too. Negative: a merge
+# missing a shard is refused for that reason.
 #   slurm_batch.sh SDLQR_BATCH SPEC WORK_DIR
 set -uo pipefail
 batch="$1" spec="$2" work="$3"
@@ -64,6 +65,19 @@ for file in flights.csv summary.txt batch.yaml; do
   cmp "$work/single/$file" "$work/slurm/$file" || fail "the Slurm batch's $file differs from the single run's"
 done
 echo "4 Slurm array tasks (task 2 killed and requeued, $resumed flights resumed) merged into the single run's $total rows, byte for byte"
+
+# --no-wait: the job id on stdout, the shards collected later by batch-merge.
+id=$("$batch" "$spec" --slurm --tasks 2 --no-wait --out "$work/later" 2>"$work/later.err") ||
+  fail "--no-wait submission failed: $(cat "$work/later.err")"
+[[ "$id" =~ ^[0-9]+$ ]] || fail "--no-wait printed '$id', not a job id"
+for _ in $(seq 1200); do
+  [ -f "$work/later/slurm/shard-1/flights.csv" ] && [ -f "$work/later/slurm/shard-2/flights.csv" ] && break
+  sleep 0.1
+done
+"$batch" merge "$spec" --out "$work/later" "$work"/later/slurm/shard-{1,2} >/dev/null 2>"$work/later-merge.err" ||
+  fail "collecting job $id failed: $(cat "$work/later-merge.err")"
+cmp "$work/single/flights.csv" "$work/later/flights.csv" || fail "job $id, collected later, differs from the single run"
+echo "job $id submitted with --no-wait, collected by batch-merge: the single run's rows"
 
 # Negative: a merge missing shard 4 is refused for that reason.
 if "$batch" merge "$spec" --out "$work/incomplete" "$work"/slurm/slurm/shard-{1,2,3} 2>"$work/incomplete.err"; then
