@@ -1,6 +1,7 @@
 #include "sdlqr/estimator/error_state_ekf.hpp"
 
 #include <Eigen/Cholesky>
+#include <cstring>
 
 #include "sdlqr/math/quaternion.hpp"
 
@@ -54,48 +55,140 @@ void propagateNominal(NavState& state, const ImuDelta& delta, const Vec3& gravit
   state.orientation = quat::multiply(state.orientation, quat::exp(dtheta)).normalized();
 }
 
-ErrorCovariance errorTransition(const NavState& state, const ImuDelta& delta) {
+namespace {
+
+ErrorTransition transitionAt(const NavState& state, const ImuDelta& delta, const Mat3& rot) {
   const double dt = delta.dt;
   const Vec3 dtheta = delta.delta_angle - state.gyro_bias * dt;
   const Vec3 dvel = delta.delta_velocity - state.accel_bias * dt;
-  const Mat3 rot = quat::rotationMatrix(state.orientation);
   // Order [dp, dv, dtheta, dbg, dba]. With R_true = R Exp(dtheta), the world velocity increment
   // R_true (dvel - dba dt) = R dvel - R [dvel]x dtheta - R dt dba; the local attitude error is
   // carried back through the turn, and a gyro bias error acts on the turn through the right
   // Jacobian of Exp (first order: I - [dtheta]x / 2).
-  ErrorCovariance f = ErrorCovariance::Identity();
+  ErrorTransition f;
   const Mat3 rot_dvel_skew = rot * skew(dvel);
-  f.block<3, 3>(kErrPos, kErrVel) = dt * Mat3::Identity();
-  f.block<3, 3>(kErrPos, kErrRot) = -0.5 * dt * rot_dvel_skew;
-  f.block<3, 3>(kErrPos, kErrAccelBias) = -0.5 * dt * dt * rot;
-  f.block<3, 3>(kErrVel, kErrRot) = -rot_dvel_skew;
-  f.block<3, 3>(kErrVel, kErrAccelBias) = -dt * rot;
-  f.block<3, 3>(kErrRot, kErrRot) = quat::rotationMatrix(quat::exp(dtheta)).transpose();
-  f.block<3, 3>(kErrRot, kErrGyroBias) = -dt * (Mat3::Identity() - 0.5 * skew(dtheta));
+  f.pos_vel = dt * Mat3::Identity();
+  f.pos_rot = -0.5 * dt * rot_dvel_skew;
+  f.pos_accel_bias = -0.5 * dt * dt * rot;
+  f.vel_rot = -rot_dvel_skew;
+  f.vel_accel_bias = -dt * rot;
+  f.rot_rot = quat::rotationMatrix(quat::exp(dtheta)).transpose();
+  f.rot_gyro_bias = -dt * (Mat3::Identity() - 0.5 * skew(dtheta));
   return f;
 }
 
-// Eigen sends a dense 15x15 product to its general GEMM kernel (packing, blocking): a third of a
-// batch flight's CPU went there. F's 3x3 blocks make it 3x3-by-3x15 products, a quarter of the work.
-ErrorCovariance transformedCovariance(const ErrorCovariance& f, const ErrorCovariance& p) {
-  const auto block = [&f](int row, int col) { return f.block<3, 3>(row, col); };
+}  // namespace
+
+ErrorCovariance ErrorTransition::dense() const {
+  ErrorCovariance f = ErrorCovariance::Identity();
+  f.block<3, 3>(kErrPos, kErrVel) = pos_vel;
+  f.block<3, 3>(kErrPos, kErrRot) = pos_rot;
+  f.block<3, 3>(kErrPos, kErrAccelBias) = pos_accel_bias;
+  f.block<3, 3>(kErrVel, kErrRot) = vel_rot;
+  f.block<3, 3>(kErrVel, kErrAccelBias) = vel_accel_bias;
+  f.block<3, 3>(kErrRot, kErrRot) = rot_rot;
+  f.block<3, 3>(kErrRot, kErrGyroBias) = rot_gyro_bias;
+  return f;
+}
+
+ErrorTransition errorTransition(const NavState& state, const ImuDelta& delta) {
+  return transitionAt(state, delta, quat::rotationMatrix(state.orientation));
+}
+
+namespace {
+
+// Two doubles in one SSE2 register (GCC/Clang vector extension; each lane plain IEEE arithmetic).
+using Pair = double __attribute__((vector_size(16)));
+Pair load2(const double* p) {
+  Pair v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+void store2(double* p, Pair v) { std::memcpy(p, &v, sizeof v); }
+Pair splat(double x) { return Pair{x, x}; }
+
+// One 3x3 factor of a block product and where its 3-wide operand starts (a row of P in the first
+// half, a column of F P in the second).
+struct Term {
+  const Mat3* f;
+  int from;
+};
+
+// F P F^T is sums of three products per term. They are added exactly as Eigen's lazy product
+// added them when this was Eigen expressions (the commit before issue 26): two rows at a time in
+// order, ((x0 + x1) + x2), and a block's odd row out as x0 + (x1 + x2); the terms then one after
+// the other onto the identity part. So every covariance, and so every flight, is the same bit for
+// bit (unit test ErrorStateEkf.TheCovarianceTransformAddsAsTheEigenExpressionItReplaced).
+double oddRowOut(const Mat3& f, int row, double b0, double b1, double b2) {
+  return f(row, 0) * b0 + (f(row, 1) * b1 + f(row, 2) * b2);
+}
+
+// Rows [to, to + 3) of F P: P's own rows (kIdentity: F's diagonal block there is the identity) plus each term's F block times rows
+// [from, from + 3) of P.
+template <bool kIdentity, int kTerms>
+void rowsOfFP(const ErrorCovariance& p, int to, const Term (&terms)[kTerms], ErrorCovariance& fp) {
+  for (int j = 0; j < kErrorDim; ++j) {
+    const double* p_col = p.data() + kErrorDim * j;
+    Pair rows01 = kIdentity ? load2(p_col + to) : Pair{0.0, 0.0};
+    double row2 = kIdentity ? p_col[to + 2] : 0.0;
+    for (int t = 0; t < kTerms; ++t) {
+      const double* f = terms[t].f->data();  // column-major: rows 0 and 1 of column k at 3 k
+      const double b0 = p_col[terms[t].from], b1 = p_col[terms[t].from + 1], b2 = p_col[terms[t].from + 2];
+      const Pair sum = (load2(f) * splat(b0) + load2(f + 3) * splat(b1)) + load2(f + 6) * splat(b2);
+      const double odd = oddRowOut(*terms[t].f, 2, b0, b1, b2);
+      rows01 = (kIdentity || t > 0) ? rows01 + sum : sum;
+      row2 = (kIdentity || t > 0) ? row2 + odd : odd;
+    }
+    double* fp_col = fp.data() + kErrorDim * j;
+    store2(fp_col + to, rows01);
+    fp_col[to + 2] = row2;
+  }
+}
+
+// Columns [to, to + 3) of F P F^T: F P's own columns (kIdentity) plus each term's columns
+// [from, from + 3) of F P times its F block transposed.
+template <bool kIdentity, int kTerms>
+void colsOfFPFt(const ErrorCovariance& fp, int to, const Term (&terms)[kTerms], ErrorCovariance& out) {
+  for (int c = 0; c < 3; ++c) {
+    const double* own = fp.data() + kErrorDim * (to + c);
+    double* out_col = out.data() + kErrorDim * (to + c);
+    for (int i = 0; i + 1 < kErrorDim; i += 2) {
+      Pair sum_all = kIdentity ? load2(own + i) : Pair{0.0, 0.0};
+      for (int t = 0; t < kTerms; ++t) {
+        const double* a = fp.data() + kErrorDim * terms[t].from + i;
+        const Mat3& f = *terms[t].f;
+        const Pair sum = (load2(a) * splat(f(c, 0)) + load2(a + kErrorDim) * splat(f(c, 1))) +
+                         load2(a + 2 * kErrorDim) * splat(f(c, 2));
+        sum_all = (kIdentity || t > 0) ? sum_all + sum : sum;
+      }
+      store2(out_col + i, sum_all);
+    }
+    constexpr int kLast = kErrorDim - 1;
+    double last = kIdentity ? own[kLast] : 0.0;
+    for (int t = 0; t < kTerms; ++t) {
+      const double* a = fp.data() + kErrorDim * terms[t].from + kLast;
+      const double odd = oddRowOut(*terms[t].f, c, a[0], a[kErrorDim], a[2 * kErrorDim]);
+      last = (kIdentity || t > 0) ? last + odd : odd;
+    }
+    out_col[kLast] = last;
+  }
+}
+
+}  // namespace
+
+// F's 3x3 blocks make F P F^T 3x3-by-3x15 products, a quarter of the dense work (Eigen sent the
+// dense 15x15 product to its GEMM kernel: a third of a batch flight's CPU), fused here so that each
+// output is written once.
+ErrorCovariance transformedCovariance(const ErrorTransition& f, const ErrorCovariance& p) {
   ErrorCovariance fp;
-  fp.middleRows<3>(kErrPos) = p.middleRows<3>(kErrPos) + block(kErrPos, kErrVel) * p.middleRows<3>(kErrVel) +
-                              block(kErrPos, kErrRot) * p.middleRows<3>(kErrRot) +
-                              block(kErrPos, kErrAccelBias) * p.middleRows<3>(kErrAccelBias);
-  fp.middleRows<3>(kErrVel) = p.middleRows<3>(kErrVel) + block(kErrVel, kErrRot) * p.middleRows<3>(kErrRot) +
-                              block(kErrVel, kErrAccelBias) * p.middleRows<3>(kErrAccelBias);
-  fp.middleRows<3>(kErrRot) =
-      block(kErrRot, kErrRot) * p.middleRows<3>(kErrRot) + block(kErrRot, kErrGyroBias) * p.middleRows<3>(kErrGyroBias);
+  rowsOfFP<true>(p, kErrPos, {{&f.pos_vel, kErrVel}, {&f.pos_rot, kErrRot}, {&f.pos_accel_bias, kErrAccelBias}}, fp);
+  rowsOfFP<true>(p, kErrVel, {{&f.vel_rot, kErrRot}, {&f.vel_accel_bias, kErrAccelBias}}, fp);
+  rowsOfFP<false>(p, kErrRot, {{&f.rot_rot, kErrRot}, {&f.rot_gyro_bias, kErrGyroBias}}, fp);
   fp.middleRows<6>(kErrGyroBias) = p.middleRows<6>(kErrGyroBias);
   ErrorCovariance out;
-  out.middleCols<3>(kErrPos) = fp.middleCols<3>(kErrPos) + fp.middleCols<3>(kErrVel) * block(kErrPos, kErrVel).transpose() +
-                               fp.middleCols<3>(kErrRot) * block(kErrPos, kErrRot).transpose() +
-                               fp.middleCols<3>(kErrAccelBias) * block(kErrPos, kErrAccelBias).transpose();
-  out.middleCols<3>(kErrVel) = fp.middleCols<3>(kErrVel) + fp.middleCols<3>(kErrRot) * block(kErrVel, kErrRot).transpose() +
-                               fp.middleCols<3>(kErrAccelBias) * block(kErrVel, kErrAccelBias).transpose();
-  out.middleCols<3>(kErrRot) = fp.middleCols<3>(kErrRot) * block(kErrRot, kErrRot).transpose() +
-                               fp.middleCols<3>(kErrGyroBias) * block(kErrRot, kErrGyroBias).transpose();
+  colsOfFPFt<true>(fp, kErrPos, {{&f.pos_vel, kErrVel}, {&f.pos_rot, kErrRot}, {&f.pos_accel_bias, kErrAccelBias}}, out);
+  colsOfFPFt<true>(fp, kErrVel, {{&f.vel_rot, kErrRot}, {&f.vel_accel_bias, kErrAccelBias}}, out);
+  colsOfFPFt<false>(fp, kErrRot, {{&f.rot_rot, kErrRot}, {&f.rot_gyro_bias, kErrGyroBias}}, out);
   out.middleCols<6>(kErrGyroBias) = fp.middleCols<6>(kErrGyroBias);
   return out;
 }
@@ -103,8 +196,8 @@ ErrorCovariance transformedCovariance(const ErrorCovariance& f, const ErrorCovar
 void propagate(NavState& state, ErrorCovariance& covariance, const ImuDelta& delta, const ProcessNoise& noise) {
   const double dt = delta.dt;
   if (!(dt > 0.0)) return;
-  const ErrorCovariance f = errorTransition(state, delta);
   const Mat3 rot = quat::rotationMatrix(state.orientation);
+  const ErrorTransition f = transitionAt(state, delta, rot);
   propagateNominal(state, delta, noise.gravity);
 
   ErrorCovariance propagated = transformedCovariance(f, covariance);

@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <cstring>
 #include <iostream>
 
 #include "sdlqr/math/quaternion.hpp"
@@ -50,7 +51,7 @@ TEST(ErrorStateEkf, TransitionMatrixMatchesFiniteDifferencesOfThePropagation) {
   const NavState x = agileState();
   const ImuDelta delta = agileDelta();
   const Vec3 gravity(0.0, 0.0, -9.81);
-  const ErrorCovariance f = errorTransition(x, delta);
+  const ErrorCovariance f = errorTransition(x, delta).dense();
   NavState nominal = x;
   propagateNominal(nominal, delta, gravity);
 
@@ -71,23 +72,66 @@ TEST(ErrorStateEkf, TransitionMatrixMatchesFiniteDifferencesOfThePropagation) {
   EXPECT_LT(worst, 1e-7);
 }
 
-TEST(ErrorStateEkf, TheBlockwiseCovarianceTransformIsTheDenseProductForTheTransitionsShape) {
+TEST(ErrorStateEkf, TheBlockwiseCovarianceTransformIsTheDenseProduct) {
   // GIVEN the transition of an agile window and a full covariance
-  const ErrorCovariance f = errorTransition(agileState(), agileDelta());
+  const ErrorTransition f = errorTransition(agileState(), agileDelta());
   std::srand(7);
   const ErrorCovariance a = ErrorCovariance::Random();
   const ErrorCovariance p = a * a.transpose() + ErrorCovariance::Identity();
 
   // THEN the block-wise F P F^T is the dense one to rounding
-  const ErrorCovariance dense = f * p * f.transpose();
+  const ErrorCovariance dense = f.dense() * p * f.dense().transpose();
   EXPECT_LT((transformedCovariance(f, p) - dense).norm(), 1e-13 * dense.norm());
+}
 
-  // AND a transition with a block outside that shape is not: the shape is a precondition the
-  // first check holds errorTransition() to.
-  ErrorCovariance other = f;
-  other.block<3, 3>(kErrGyroBias, kErrRot) = Mat3::Identity();
-  const ErrorCovariance other_dense = other * p * other.transpose();
-  EXPECT_GT((transformedCovariance(other, p) - other_dense).norm(), 1e-3 * other_dense.norm());
+// F P F^T as Eigen expressions evaluated it before issue 26 (lazy 3x3-by-3x15 products added one
+// after the other): the sums transformedCovariance() must reproduce to the last bit, or every
+// flight would change.
+ErrorCovariance eigenExpressionTransform(const ErrorTransition& f, const ErrorCovariance& p) {
+  ErrorCovariance fp;
+  fp.middleRows<3>(kErrPos) = p.middleRows<3>(kErrPos) + f.pos_vel * p.middleRows<3>(kErrVel) +
+                              f.pos_rot * p.middleRows<3>(kErrRot) + f.pos_accel_bias * p.middleRows<3>(kErrAccelBias);
+  fp.middleRows<3>(kErrVel) = p.middleRows<3>(kErrVel) + f.vel_rot * p.middleRows<3>(kErrRot) +
+                              f.vel_accel_bias * p.middleRows<3>(kErrAccelBias);
+  fp.middleRows<3>(kErrRot) = f.rot_rot * p.middleRows<3>(kErrRot) + f.rot_gyro_bias * p.middleRows<3>(kErrGyroBias);
+  fp.middleRows<6>(kErrGyroBias) = p.middleRows<6>(kErrGyroBias);
+  ErrorCovariance out;
+  out.middleCols<3>(kErrPos) = fp.middleCols<3>(kErrPos) + fp.middleCols<3>(kErrVel) * f.pos_vel.transpose() +
+                               fp.middleCols<3>(kErrRot) * f.pos_rot.transpose() +
+                               fp.middleCols<3>(kErrAccelBias) * f.pos_accel_bias.transpose();
+  out.middleCols<3>(kErrVel) = fp.middleCols<3>(kErrVel) + fp.middleCols<3>(kErrRot) * f.vel_rot.transpose() +
+                               fp.middleCols<3>(kErrAccelBias) * f.vel_accel_bias.transpose();
+  out.middleCols<3>(kErrRot) =
+      fp.middleCols<3>(kErrRot) * f.rot_rot.transpose() + fp.middleCols<3>(kErrGyroBias) * f.rot_gyro_bias.transpose();
+  out.middleCols<6>(kErrGyroBias) = fp.middleCols<6>(kErrGyroBias);
+  return out;
+}
+
+TEST(ErrorStateEkf, TheCovarianceTransformAddsAsTheEigenExpressionItReplaced) {
+  // GIVEN many random states, IMU windows and covariances
+  std::srand(11);
+  int differing = 0;
+  for (int n = 0; n < 2000; ++n) {
+    NavState x = agileState();
+    x.orientation = quat::exp(Vec3::Random() * 3.0);
+    x.velocity = 5.0 * Vec3::Random();
+    ImuDelta delta = agileDelta();
+    delta.delta_angle = Vec3::Random() * 0.02;
+    delta.delta_velocity = Vec3::Random() * 0.1;
+    const ErrorCovariance a = ErrorCovariance::Random();
+    const ErrorCovariance p = 1e-3 * a * a.transpose() + 1e-4 * ErrorCovariance::Identity();
+    const ErrorTransition f = errorTransition(x, delta);
+    // THEN the hand-vectorised transform equals the Eigen expressions bit for bit
+    const ErrorCovariance fast = transformedCovariance(f, p), reference = eigenExpressionTransform(f, p);
+    differing += std::memcmp(fast.data(), reference.data(), sizeof(double) * kErrorDim * kErrorDim) != 0;
+  }
+  EXPECT_EQ(differing, 0) << "of 2000 covariances";
+  // AND the comparison can tell: the same sums added in another order differ in most cases
+  const ErrorTransition f = errorTransition(agileState(), agileDelta());
+  const ErrorCovariance a = ErrorCovariance::Random();
+  const ErrorCovariance p = a * a.transpose();
+  const ErrorCovariance reordered = (f.dense() * p) * f.dense().transpose();
+  EXPECT_NE(std::memcmp(reordered.data(), eigenExpressionTransform(f, p).data(), sizeof(double) * kErrorDim * kErrorDim), 0);
 }
 
 TEST(ErrorStateEkf, PropagationGrowsUncertaintyByTheNoiseModel) {
