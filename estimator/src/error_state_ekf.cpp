@@ -1,7 +1,9 @@
 #include "sdlqr/estimator/error_state_ekf.hpp"
 
 #include <Eigen/Cholesky>
+#include <array>
 #include <cstring>
+#include <utility>
 
 #include "sdlqr/math/quaternion.hpp"
 
@@ -194,13 +196,23 @@ ErrorCovariance transformedCovariance(const ErrorTransition& f, const ErrorCovar
 }
 
 void propagate(NavState& state, ErrorCovariance& covariance, const ImuDelta& delta, const ProcessNoise& noise) {
+  propagate(state, covariance, delta, noise, state, covariance);
+}
+
+void propagate(const NavState& state, const ErrorCovariance& covariance, const ImuDelta& delta, const ProcessNoise& noise,
+               NavState& state_out, ErrorCovariance& covariance_out) {
   const double dt = delta.dt;
-  if (!(dt > 0.0)) return;
+  if (!(dt > 0.0)) {
+    state_out = state;
+    covariance_out = covariance;
+    return;
+  }
   const Mat3 rot = quat::rotationMatrix(state.orientation);
   const ErrorTransition f = transitionAt(state, delta, rot);
-  propagateNominal(state, delta, noise.gravity);
-
   ErrorCovariance propagated = transformedCovariance(f, covariance);
+  state_out = state;
+  propagateNominal(state_out, delta, noise.gravity);
+
   // White accelerometer noise integrated once (velocity) and twice (position); isotropic, so the
   // rotation to the world frame leaves it unchanged.
   const Mat3 eye = Mat3::Identity();
@@ -221,28 +233,122 @@ void propagate(NavState& state, ErrorCovariance& covariance, const ImuDelta& del
     propagated.block<3, 3>(kErrVel, kErrPos) += (0.5 * dt) * missed;
     propagated.block<3, 3>(kErrVel, kErrVel) += missed;
   }
-  covariance = 0.5 * (propagated + propagated.transpose());
+  covariance_out = 0.5 * (propagated + propagated.transpose());
 }
+
+namespace {
+
+// The error-state components a pose measures (H selects them): position and attitude.
+constexpr int kMeasuredCount = 6;
+constexpr int kMeasured[kMeasuredCount] = {kErrPos, kErrPos + 1, kErrPos + 2, kErrRot, kErrRot + 1, kErrRot + 2};
+constexpr bool measured(int k) { return (k >= kErrPos && k < kErrPos + 3) || (k >= kErrRot && k < kErrRot + 3); }
+
+// A lazy product's odd row out, summed as Eigen's unrolled reduction sums it (halves, the odd
+// element on the right: x0 + (x1 + x2) for three).
+template <int kLength>
+double unrolledSum(const double* x) {
+  if constexpr (kLength == 1) {
+    return x[0];
+  } else {
+    constexpr int kHalf = kLength / 2;
+    return unrolledSum<kHalf>(x) + unrolledSum<kLength - kHalf>(x + kHalf);
+  }
+}
+
+// The Joseph form's 15x15 products add as Eigen's lazy products added them into a 15x15 matrix
+// on a 16-byte boundary (the commit before issue 26): its slice-vectorised assignment takes each
+// column's rows in pairs, from row 0 in even columns and from row 1 in odd ones (columns are 120
+// bytes apart), summing a pair's terms in order; the row left over (14 or 0) is a reduction
+// (unrolledSum). Unit test ErrorStateEkf.ThePoseUpdateAddsAsTheEigenExpressionsItReplaced.
+int firstPairedRow(int column) { return column % 2; }
+int unpairedRow(int column) { return column % 2 == 0 ? kErrorDim - 1 : 0; }
+
+// The k, ascending, whose (I - K H)(i, k) may be non-zero for some i of `rows`: the measured
+// components and the rows themselves (the diagonal). The other terms add exact zeros.
+struct Terms {
+  int count = 0;
+  int k[kMeasuredCount + 2] = {};
+};
+constexpr Terms termsOfRows(int first, int last) {
+  Terms t;
+  for (int k = 0; k < kErrorDim; ++k) {
+    if (measured(k) || (k >= first && k <= last)) t.k[t.count++] = k;
+  }
+  return t;
+}
+template <int... kRows>
+constexpr std::array<Terms, sizeof...(kRows)> termTable(std::integer_sequence<int, kRows...>, int span) {
+  return {termsOfRows(kRows, kRows + span)...};
+}
+// [i]: of rows i and i + 1 (a pair); of row i alone.
+constexpr auto kPairTerms = termTable(std::make_integer_sequence<int, kErrorDim - 1>(), 1);
+constexpr auto kRowTerms = termTable(std::make_integer_sequence<int, kErrorDim>(), 0);
+
+// (I - K H) P: I - K H is the identity but for its measured columns, so rows i, i + 1 take the
+// terms k measured or i or i + 1 (the others add exact zeros).
+ErrorCovariance keptCovariance(const ErrorCovariance& i_kh, const ErrorCovariance& p) {
+  ErrorCovariance kept;
+  for (int j = 0; j < kErrorDim; ++j) {
+    for (int i = firstPairedRow(j); i + 1 < kErrorDim; i += 2) {
+      const Terms& terms = kPairTerms[static_cast<size_t>(i)];
+      Pair sum = load2(&i_kh(i, terms.k[0])) * splat(p(terms.k[0], j));
+      for (int t = 1; t < terms.count; ++t) sum = sum + load2(&i_kh(i, terms.k[t])) * splat(p(terms.k[t], j));
+      store2(&kept(i, j), sum);
+    }
+    const int row = unpairedRow(j);
+    double terms[kErrorDim];
+    for (int k = 0; k < kErrorDim; ++k) terms[k] = i_kh(row, k) * p(k, j);
+    kept(row, j) = unrolledSum<kErrorDim>(terms);
+  }
+  return kept;
+}
+
+// kept (I - K H)^T + (K R) K^T, each coefficient the two lazy products' sum.
+ErrorCovariance josephSum(const ErrorCovariance& kept, const ErrorCovariance& i_kh,
+                          const Eigen::Matrix<double, kErrorDim, kMeasuredCount>& gain_noise,
+                          const Eigen::Matrix<double, kErrorDim, kMeasuredCount>& gain) {
+  ErrorCovariance out;
+  for (int j = 0; j < kErrorDim; ++j) {
+    const Terms& terms = kRowTerms[static_cast<size_t>(j)];  // (I - K H)(j, k) is an exact zero for the others
+    for (int i = firstPairedRow(j); i + 1 < kErrorDim; i += 2) {
+      Pair kept_part = load2(&kept(i, terms.k[0])) * splat(i_kh(j, terms.k[0]));
+      for (int t = 1; t < terms.count; ++t) kept_part = kept_part + load2(&kept(i, terms.k[t])) * splat(i_kh(j, terms.k[t]));
+      Pair noise_part = load2(&gain_noise(i, 0)) * splat(gain(j, 0));
+      for (int m = 1; m < kMeasuredCount; ++m) noise_part = noise_part + load2(&gain_noise(i, m)) * splat(gain(j, m));
+      store2(&out(i, j), kept_part + noise_part);
+    }
+    const int row = unpairedRow(j);
+    double kept_terms[kErrorDim], noise_terms[kMeasuredCount];
+    for (int k = 0; k < kErrorDim; ++k) kept_terms[k] = kept(row, k) * i_kh(j, k);
+    for (int m = 0; m < kMeasuredCount; ++m) noise_terms[m] = gain_noise(row, m) * gain(j, m);
+    out(row, j) = unrolledSum<kErrorDim>(kept_terms) + unrolledSum<kMeasuredCount>(noise_terms);
+  }
+  return out;
+}
+
+}  // namespace
 
 PoseUpdateResult updatePose(NavState& state, ErrorCovariance& covariance, const PoseMeasurement& pose,
                             double gate_chi2) {
   using Mat6 = PoseMatrix;
   using Vec6 = PoseVector;
-  using Gain = Eigen::Matrix<double, kErrorDim, 6>;
-  using Selection = Eigen::Matrix<double, 6, kErrorDim>;
+  using Gain = Eigen::Matrix<double, kErrorDim, kMeasuredCount>;
+  using Selection = Eigen::Matrix<double, kMeasuredCount, kErrorDim>;
 
   Vec6 residual;
   residual.head<3>() = pose.position - state.position;
   // q_meas = q (x) Exp(dtheta + noise): the residual is the local rotation from estimate to pose.
   residual.tail<3>() = quat::boxMinus(pose.orientation, state.orientation);
 
-  Selection h = Selection::Zero();
-  h.block<3, 3>(0, kErrPos) = Mat3::Identity();
-  h.block<3, 3>(3, kErrRot) = Mat3::Identity();
-  Mat6 noise = Mat6::Zero();
-  noise.diagonal() << Vec3::Constant(pose.position_var), Vec3::Constant(pose.attitude_var);
-
-  const Mat6 innovation_cov = h * covariance * h.transpose() + noise;
+  // H selects the measured components: H P is their rows of P, H P H^T their rows and columns.
+  Vec6 noise_var;
+  noise_var << Vec3::Constant(pose.position_var), Vec3::Constant(pose.attitude_var);
+  Selection measured_rows;
+  Mat6 innovation_cov;
+  for (int a = 0; a < kMeasuredCount; ++a) {
+    measured_rows.row(a) = covariance.row(kMeasured[a]);
+    for (int b = 0; b < kMeasuredCount; ++b) innovation_cov(a, b) = covariance(kMeasured[a], kMeasured[b]) + (a == b ? noise_var[a] : 0.0);
+  }
   const Eigen::LLT<Mat6> llt(innovation_cov);
   PoseUpdateResult result;
   result.innovation = residual;
@@ -252,14 +358,14 @@ PoseUpdateResult updatePose(NavState& state, ErrorCovariance& covariance, const 
   if (!(result.mahalanobis_sq <= gate_chi2)) return result;
   result.accepted = true;
 
-  const Gain gain = llt.solve(h * covariance).transpose();  // P H^T S^-1 with P and S symmetric
+  const Gain gain = llt.solve(measured_rows).transpose();  // P H^T S^-1 with P and S symmetric
   const ErrorVector correction = gain * residual;
-  // Joseph form keeps P symmetric positive definite despite rounding.
-  const ErrorCovariance i_kh = ErrorCovariance::Identity() - gain * h;
-  // lazyProduct: coefficient-wise fixed-size products, not Eigen's GEMM path (see above).
-  const ErrorCovariance kept = i_kh.lazyProduct(covariance);
-  const Gain gain_noise = gain * noise;
-  ErrorCovariance updated = kept.lazyProduct(i_kh.transpose()) + gain_noise.lazyProduct(gain.transpose());
+  // Joseph form keeps P symmetric positive definite despite rounding:
+  // (I - K H) P (I - K H)^T + K R K^T, with R diagonal.
+  ErrorCovariance i_kh = ErrorCovariance::Identity();
+  for (int m = 0; m < kMeasuredCount; ++m) i_kh.col(kMeasured[m]) -= gain.col(m);
+  const Gain gain_noise = gain * noise_var.asDiagonal();
+  ErrorCovariance updated = josephSum(keptCovariance(i_kh, covariance), i_kh, gain_noise, gain);
 
   state.position += correction.segment<3>(kErrPos);
   state.velocity += correction.segment<3>(kErrVel);

@@ -133,17 +133,16 @@ std::optional<StateEstimate> Estimator::onImu(const ImuSample& sample) {
 }
 
 void Estimator::onWindow(const ImuWindow& window) {
-  NavState state;
-  ErrorCovariance covariance = ErrorCovariance::Zero();
-  if (initialized_ && !history_.empty()) {
-    state = history_.newest().state;
-    covariance = history_.newest().covariance;
-    propagate(state, covariance, window.delta, noise_);
-  }
+  // The newest entry keeps its slot when a new one is pushed (the capacity is at least 2).
+  const HistoryEntry* previous = initialized_ && !history_.empty() ? &history_.newest() : nullptr;
   HistoryEntry& entry = history_.pushNewest();
+  if (previous != nullptr) {
+    propagate(previous->state, previous->covariance, window.delta, noise_, entry.state, entry.covariance);
+  } else {
+    entry.state = NavState();
+    entry.covariance.setZero();
+  }
   entry.utime = window.end_utime;
-  entry.state = state;
-  entry.covariance = covariance;
   entry.input = window.delta;
   entry.imu_seq = window.last_imu_seq;
   ++counters_.imu_windows;
@@ -274,9 +273,7 @@ VioOutcome Estimator::fuseAtCaptureTime(const VioPose& pose, bool initialize) {
   for (first_to_recompute = updated + 1; first_to_recompute < history_.size(); ++first_to_recompute) {
     HistoryEntry& entry = history_.at(first_to_recompute);
     const HistoryEntry& previous = history_.at(first_to_recompute - 1);
-    entry.state = previous.state;
-    entry.covariance = previous.covariance;
-    propagate(entry.state, entry.covariance, entry.input, noise_);
+    propagate(previous.state, previous.covariance, entry.input, noise_, entry.state, entry.covariance);
   }
 
   initialized_ = true;

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
+
 #include <cstring>
 #include <iostream>
 
@@ -178,6 +180,75 @@ TEST(ErrorStateEkf, PoseUpdateIsTheKalmanBlend) {
   EXPECT_NEAR(p(kErrPos, kErrPos), 4e-4 * 1e-4 / 5e-4, 1e-12);
   EXPECT_NEAR(p(kErrRot, kErrRot), 0.5e-4, 1e-12);
   EXPECT_LT((quat::log(x.orientation)).norm(), 1e-15);
+}
+
+// The Joseph-form pose update as Eigen expressions computed it before issue 26, its 15x15 results
+// on a 16-byte boundary (as GCC placed them): what updatePose() must reproduce to the last bit.
+PoseUpdateResult eigenExpressionPoseUpdate(NavState& state, ErrorCovariance& covariance, const PoseMeasurement& pose) {
+  using Selection = Eigen::Matrix<double, 6, kErrorDim>;
+  using Gain = Eigen::Matrix<double, kErrorDim, 6>;
+  PoseVector residual;
+  residual.head<3>() = pose.position - state.position;
+  residual.tail<3>() = quat::boxMinus(pose.orientation, state.orientation);
+  Selection h = Selection::Zero();
+  h.block<3, 3>(0, kErrPos) = Mat3::Identity();
+  h.block<3, 3>(3, kErrRot) = Mat3::Identity();
+  PoseMatrix noise = PoseMatrix::Zero();
+  noise.diagonal() << Vec3::Constant(pose.position_var), Vec3::Constant(pose.attitude_var);
+  PoseUpdateResult result;
+  result.innovation_cov = h * covariance * h.transpose() + noise;
+  const Eigen::LLT<PoseMatrix> llt(result.innovation_cov);
+  result.mahalanobis_sq = residual.dot(llt.solve(residual));
+  result.accepted = true;
+  const Gain gain = llt.solve(h * covariance).transpose();
+  const ErrorVector correction = gain * residual;
+  const ErrorCovariance i_kh = ErrorCovariance::Identity() - gain * h;
+  alignas(16) const ErrorCovariance kept = i_kh.lazyProduct(covariance);
+  const Gain gain_noise = gain * noise;
+  alignas(16) ErrorCovariance updated = kept.lazyProduct(i_kh.transpose()) + gain_noise.lazyProduct(gain.transpose());
+  state.position += correction.segment<3>(kErrPos);
+  state.velocity += correction.segment<3>(kErrVel);
+  const Vec3 dtheta = correction.segment<3>(kErrRot);
+  state.orientation = quat::multiply(state.orientation, quat::exp(dtheta)).normalized();
+  state.gyro_bias += correction.segment<3>(kErrGyroBias);
+  state.accel_bias += correction.segment<3>(kErrAccelBias);
+  Mat3 reset = Mat3::Identity();
+  reset -= 0.5 * (Mat3() << 0.0, -dtheta[2], dtheta[1], dtheta[2], 0.0, -dtheta[0], -dtheta[1], dtheta[0], 0.0).finished();
+  updated.middleRows<3>(kErrRot) = (reset * updated.middleRows<3>(kErrRot)).eval();
+  updated.middleCols<3>(kErrRot) = (updated.middleCols<3>(kErrRot) * reset.transpose()).eval();
+  covariance = 0.5 * (updated + updated.transpose());
+  return result;
+}
+
+TEST(ErrorStateEkf, ThePoseUpdateAddsAsTheEigenExpressionsItReplaced) {
+  // GIVEN many random states, covariances (full, and diagonal as after a restart) and poses
+  std::srand(13);
+  int differing = 0;
+  for (int n = 0; n < 1000; ++n) {
+    NavState x = agileState();
+    x.orientation = quat::exp(Vec3::Random() * 3.0);
+    const ErrorCovariance a = ErrorCovariance::Random();
+    const ErrorCovariance full = 1e-4 * a * a.transpose() + 1e-5 * ErrorCovariance::Identity();
+    ErrorCovariance p = 0.5 * (full + full.transpose());  // exactly symmetric, as the filter keeps it
+    if (n % 4 == 0) p = (1e-3 * (ErrorVector::Random().array() + 1.5)).matrix().asDiagonal();
+    PoseMeasurement pose;
+    pose.position = x.position + 0.01 * Vec3::Random();
+    pose.orientation = quat::multiply(x.orientation, quat::exp(0.01 * Vec3::Random()));
+    pose.position_var = 1e-4 * (1 + n % 3);
+    pose.attitude_var = 2e-4;
+    // WHEN both fuse it
+    NavState fast_state = x, reference_state = x;
+    ErrorCovariance fast = p, reference = p;
+    const PoseUpdateResult r = updatePose(fast_state, fast, pose, 1e9);
+    const PoseUpdateResult expected = eigenExpressionPoseUpdate(reference_state, reference, pose);
+    // THEN every number is the same
+    const bool same = r.accepted && fast == reference && r.mahalanobis_sq == expected.mahalanobis_sq &&
+                      r.innovation_cov == expected.innovation_cov && fast_state.position == reference_state.position &&
+                      fast_state.velocity == reference_state.velocity && fast_state.orientation == reference_state.orientation &&
+                      fast_state.gyro_bias == reference_state.gyro_bias && fast_state.accel_bias == reference_state.accel_bias;
+    differing += !same;
+  }
+  EXPECT_EQ(differing, 0) << "of 1000 pose updates";
 }
 
 TEST(ErrorStateEkf, AttitudeResidualIsLocal) {

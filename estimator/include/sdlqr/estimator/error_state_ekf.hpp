@@ -23,6 +23,10 @@ struct ProcessNoise {
 // accelerometer samples in `delta` add clip_velocity_var each to the velocity variance along
 // their body axis (as an impulse at mid-interval, so position and its correlation follow).
 void propagate(NavState& state, ErrorCovariance& covariance, const ImuDelta& delta, const ProcessNoise& noise);
+// The same from one state and covariance into others (the history's next entry, written in place;
+// the outputs may be the inputs).
+void propagate(const NavState& state, const ErrorCovariance& covariance, const ImuDelta& delta, const ProcessNoise& noise,
+               NavState& state_out, ErrorCovariance& covariance_out);
 
 // F = d(error after) / d(error before) of one propagation: the identity but for these 3x3 blocks
 // (row, column), so F P F^T takes 3x3-by-3x15 products instead of Eigen's 15x15 GEMM path.
