@@ -14,10 +14,20 @@ Vec4 saturatedSetpoint(const MotorCommand& command, const VehicleParams& vehicle
   return setpoint;
 }
 
+MotorLag::MotorLag(double time_constant, double step)
+    : time_constant_(time_constant), half_step_(0.5 * step), step_(step) {
+  remaining_half_step_ = remaining(half_step_);
+  remaining_step_ = remaining(step_);
+}
+
+double MotorLag::remaining(double tau) const {
+  return time_constant_ > 0.0 ? std::exp(-tau / time_constant_) : 0.0;
+}
+
 Vec4 MotorLag::thrustAt(double tau) const {
   if (tau <= 0.0) return thrust_;
-  const double remaining = time_constant_ > 0.0 ? std::exp(-tau / time_constant_) : 0.0;
-  return setpoint_ + remaining * (thrust_ - setpoint_);
+  const double factor = tau == half_step_ ? remaining_half_step_ : tau == step_ ? remaining_step_ : remaining(tau);
+  return setpoint_ + factor * (thrust_ - setpoint_);
 }
 
 RotorWrench::RotorWrench(const VehicleParams& vehicle, double gravity)

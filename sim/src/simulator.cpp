@@ -66,7 +66,7 @@ Simulator::Simulator(const VehicleParams& vehicle, const SimParams& params, uint
       plant_(plantOf(vehicle, stress.plant)),
       body_properties_(propertiesOf(plant_, params.gravity)),
       rotor_wrench_(plant_, params.gravity),
-      motors_(plant_.motor_time_constant),
+      motors_(plant_.motor_time_constant, params.physicsPeriod()),
       battery_(params.battery, vehicle, params.gravity),
       imu_(params.imu, seed),
       vio_(params.vio, params.physics_rate_hz, seed),

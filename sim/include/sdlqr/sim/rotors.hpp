@@ -17,7 +17,9 @@ Vec4 saturatedSetpoint(const MotorCommand& command, const VehicleParams& vehicle
 // T(tau) = T_sp + (T_0 - T_sp) exp(-tau / time_constant).
 class MotorLag {
  public:
-  explicit MotorLag(double time_constant) : time_constant_(time_constant) {}
+  // `step` [s]: the physics step, whose instants the integrator asks for at every step (step / 2,
+  // step): their decay factors are computed once.
+  MotorLag(double time_constant, double step);
 
   void setSetpoint(const Vec4& setpoint) { setpoint_ = setpoint; }
   const Vec4& setpoint() const { return setpoint_; }
@@ -30,7 +32,12 @@ class MotorLag {
   void setThrust(const Vec4& thrust) { thrust_ = thrust; }
 
  private:
+  // exp(-tau / time_constant), 0 without a lag.
+  double remaining(double tau) const;
+
   double time_constant_;
+  double half_step_, step_;
+  double remaining_half_step_, remaining_step_;
   Vec4 setpoint_ = Vec4::Zero();
   Vec4 thrust_ = Vec4::Zero();
 };
