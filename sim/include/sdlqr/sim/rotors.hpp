@@ -47,10 +47,19 @@ class RotorWrench {
  public:
   RotorWrench(const VehicleParams& vehicle, double gravity);
 
+  // What per-rotor thrusts [N] give whatever the body's state: collective thrust and torques, and
+  // the mean rotor speed over hover rotor speed. The integrator's two mid-step stages share it.
+  struct Load {
+    Vec4 thrust_and_torques;
+    double rotor_speed_ratio;
+  };
+  Load load(const Vec4& thrust) const;
+
   // Wrench of the given per-rotor thrusts [N] on a body in state s. Rotor drag is induced by the
   // spinning rotors: it grows with rotor speed (~ sqrt(thrust)) and equals the configured
   // mass-normalized coefficients at hover thrust, vanishing when the rotors stop.
-  Wrench operator()(const Vec4& thrust, const BodyState& s) const;
+  Wrench operator()(const Vec4& thrust, const BodyState& s) const { return (*this)(load(thrust), s); }
+  Wrench operator()(const Load& load, const BodyState& s) const;
 
  private:
   Mat44 effectiveness_;
