@@ -29,6 +29,9 @@ Estimator::Estimator(const EstimatorParams& params)
     : params_(params),
       noise_(ProcessNoise::from(params)),
       period_us_(params.outputPeriodUs()),
+      imu_max_gap_us_(secondsToUs(params.imu_max_gap)),
+      reinit_after_us_(secondsToUs(params.reinit_after)),
+      vio_timeout_us_(secondsToUs(params.vio_timeout)),
       downsampler_(params.outputPeriodUs(), params.accel_clip_level),
       history_(params.valid() ? params.historyCapacity() : 2),
       gated_run_(params.gate_chi2, secondsToUs(params.vio_reset_after)) {
@@ -79,7 +82,7 @@ bool Estimator::imuTimingAcceptable(const ImuSample& sample) {
   RejectReason reason;
   if (step <= 0) {
     reason = RejectReason::kTimeBackwards;
-  } else if (step > secondsToUs(params_.imu_max_gap)) {
+  } else if (step > imu_max_gap_us_) {
     reason = RejectReason::kTimeGap;
   } else {
     timing_rejects_in_a_row_ = 0;
@@ -152,7 +155,7 @@ void Estimator::onWindow(const ImuWindow& window) {
 // ---- VIO ----------------------------------------------------------------------------------------
 
 bool Estimator::needsInitialization(int64_t capture_utime) const {
-  return !initialized_ || capture_utime - last_fused_capture_ > secondsToUs(params_.reinit_after);
+  return !initialized_ || capture_utime - last_fused_capture_ > reinit_after_us_;
 }
 
 VioOutcome Estimator::onVio(const VioPose& pose) {
@@ -294,7 +297,7 @@ VioOutcome Estimator::fuseAtCaptureTime(const VioPose& pose, bool initialize) {
 void Estimator::updateStatus() {
   if (!initialized_) {
     status_ = EstimatorStatus::kInitializing;
-  } else if (stateUtime() - last_fused_capture_ > secondsToUs(params_.vio_timeout)) {
+  } else if (stateUtime() - last_fused_capture_ > vio_timeout_us_) {
     status_ = EstimatorStatus::kVioTimeout;
   } else {
     status_ = EstimatorStatus::kOk;
