@@ -129,8 +129,8 @@ double oddRowOut(const Mat3& f, int row, double b0, double b1, double b2) {
 // Rows [to, to + 3) of F P: P's own rows (kIdentity: F's diagonal block there is the identity) plus each term's F block times rows
 // [from, from + 3) of P.
 template <bool kIdentity, int kTerms>
-void rowsOfFP(const ErrorCovariance& p, int to, const Term (&terms)[kTerms], ErrorCovariance& fp) {
-  for (int j = 0; j < kErrorDim; ++j) {
+void rowsOfFP(const ErrorCovariance& p, int to, const Term (&terms)[kTerms], ErrorCovariance& fp, int first_column = 0) {
+  for (int j = first_column; j < kErrorDim; ++j) {
     const double* p_col = p.data() + kErrorDim * j;
     Pair rows01 = kIdentity ? load2(p_col + to) : Pair{0.0, 0.0};
     double row2 = kIdentity ? p_col[to + 2] : 0.0;
@@ -178,7 +178,44 @@ void colsOfFPFt(const ErrorCovariance& fp, int to, const Term (&terms)[kTerms], 
 }
 
 #if defined(__x86_64__)
-// The same on four rows at a time where the CPU has AVX (each lane adds exactly as above: the
+// rowsOfFP on two columns at a time where the CPU has AVX: rows 0 and 1 of both in one vector,
+// row 2 of both in a pair; each lane adds exactly as rowsOfFP does.
+template <bool kIdentity, int kTerms>
+__attribute__((target("avx"))) void rowsOfFPAvx(const ErrorCovariance& p, int to, const Term (&terms)[kTerms],
+                                                ErrorCovariance& fp) {
+  using Quad = double __attribute__((vector_size(32)));
+  constexpr int kPairedColumns = kErrorDim - 1;  // columns 0..13 two at a time, 14 alone
+  for (int j = 0; j < kPairedColumns; j += 2) {
+    const double* c0 = p.data() + kErrorDim * j;
+    const double* c1 = c0 + kErrorDim;
+    Quad rows01 = kIdentity ? Quad{c0[to], c0[to + 1], c1[to], c1[to + 1]} : Quad{0.0, 0.0, 0.0, 0.0};
+    Pair row2 = kIdentity ? Pair{c0[to + 2], c1[to + 2]} : Pair{0.0, 0.0};
+    for (int t = 0; t < kTerms; ++t) {
+      const Mat3& f = *terms[t].f;
+      const int s = terms[t].from;
+      // No lambdas here: they would not inherit target("avx") and so could not return a Quad.
+      const Quad f0 = {f(0, 0), f(1, 0), f(0, 0), f(1, 0)}, p0 = {c0[s], c0[s], c1[s], c1[s]};
+      const Quad f1 = {f(0, 1), f(1, 1), f(0, 1), f(1, 1)}, p1 = {c0[s + 1], c0[s + 1], c1[s + 1], c1[s + 1]};
+      const Quad f2 = {f(0, 2), f(1, 2), f(0, 2), f(1, 2)}, p2 = {c0[s + 2], c0[s + 2], c1[s + 2], c1[s + 2]};
+      const Quad sum = (f0 * p0 + f1 * p1) + f2 * p2;
+      const Pair odd = splat(f(2, 0)) * Pair{c0[s], c1[s]} +
+                       (splat(f(2, 1)) * Pair{c0[s + 1], c1[s + 1]} + splat(f(2, 2)) * Pair{c0[s + 2], c1[s + 2]});
+      rows01 = (kIdentity || t > 0) ? rows01 + sum : sum;
+      row2 = (kIdentity || t > 0) ? row2 + odd : odd;
+    }
+    double* out0 = fp.data() + kErrorDim * j;
+    double* out1 = out0 + kErrorDim;
+    out0[to] = rows01[0];
+    out0[to + 1] = rows01[1];
+    out1[to] = rows01[2];
+    out1[to + 1] = rows01[3];
+    out0[to + 2] = row2[0];
+    out1[to + 2] = row2[1];
+  }
+  rowsOfFP<kIdentity>(p, to, terms, fp, kPairedColumns);
+}
+
+// colsOfFPFt on four rows at a time where the CPU has AVX (each lane adds exactly as above: the
 // association is per element, not per vector). AVX only, never FMA: a fused multiply-add rounds
 // once where the sums above round twice.
 template <bool kIdentity, int kTerms>
@@ -221,9 +258,17 @@ __attribute__((target("avx"))) void colsOfFPFtAvx(const ErrorCovariance& fp, int
 }
 #endif
 
-// Columns [to, to + 3) of F P F^T on the widest vectors the CPU offers, the same sums either way.
+// Rows [to, to + 3) of F P and columns [to, to + 3) of F P F^T on the widest vectors the CPU
+// offers, the same sums either way.
 template <bool kIdentity, int kTerms>
-void columnsOfFPFt(const ErrorCovariance& fp, int to, const Term (&terms)[kTerms], ErrorCovariance& out) {
+void rowsOfFPOnVectors(const ErrorCovariance& p, int to, const Term (&terms)[kTerms], ErrorCovariance& fp) {
+#if defined(__x86_64__)
+  if (activeKernelIsa() != KernelIsa::kBaseline) return rowsOfFPAvx<kIdentity>(p, to, terms, fp);
+#endif
+  rowsOfFP<kIdentity>(p, to, terms, fp);
+}
+template <bool kIdentity, int kTerms>
+void colsOfFPFtOnVectors(const ErrorCovariance& fp, int to, const Term (&terms)[kTerms], ErrorCovariance& out) {
 #if defined(__x86_64__)
   if (activeKernelIsa() != KernelIsa::kBaseline) return colsOfFPFtAvx<kIdentity>(fp, to, terms, out);
 #endif
@@ -237,14 +282,14 @@ void columnsOfFPFt(const ErrorCovariance& fp, int to, const Term (&terms)[kTerms
 // output is written once.
 ErrorCovariance transformedCovariance(const ErrorTransition& f, const ErrorCovariance& p) {
   ErrorCovariance fp;
-  rowsOfFP<true>(p, kErrPos, {{&f.pos_vel, kErrVel}, {&f.pos_rot, kErrRot}, {&f.pos_accel_bias, kErrAccelBias}}, fp);
-  rowsOfFP<true>(p, kErrVel, {{&f.vel_rot, kErrRot}, {&f.vel_accel_bias, kErrAccelBias}}, fp);
-  rowsOfFP<false>(p, kErrRot, {{&f.rot_rot, kErrRot}, {&f.rot_gyro_bias, kErrGyroBias}}, fp);
+  rowsOfFPOnVectors<true>(p, kErrPos, {{&f.pos_vel, kErrVel}, {&f.pos_rot, kErrRot}, {&f.pos_accel_bias, kErrAccelBias}}, fp);
+  rowsOfFPOnVectors<true>(p, kErrVel, {{&f.vel_rot, kErrRot}, {&f.vel_accel_bias, kErrAccelBias}}, fp);
+  rowsOfFPOnVectors<false>(p, kErrRot, {{&f.rot_rot, kErrRot}, {&f.rot_gyro_bias, kErrGyroBias}}, fp);
   fp.middleRows<6>(kErrGyroBias) = p.middleRows<6>(kErrGyroBias);
   ErrorCovariance out;
-  columnsOfFPFt<true>(fp, kErrPos, {{&f.pos_vel, kErrVel}, {&f.pos_rot, kErrRot}, {&f.pos_accel_bias, kErrAccelBias}}, out);
-  columnsOfFPFt<true>(fp, kErrVel, {{&f.vel_rot, kErrRot}, {&f.vel_accel_bias, kErrAccelBias}}, out);
-  columnsOfFPFt<false>(fp, kErrRot, {{&f.rot_rot, kErrRot}, {&f.rot_gyro_bias, kErrGyroBias}}, out);
+  colsOfFPFtOnVectors<true>(fp, kErrPos, {{&f.pos_vel, kErrVel}, {&f.pos_rot, kErrRot}, {&f.pos_accel_bias, kErrAccelBias}}, out);
+  colsOfFPFtOnVectors<true>(fp, kErrVel, {{&f.vel_rot, kErrRot}, {&f.vel_accel_bias, kErrAccelBias}}, out);
+  colsOfFPFtOnVectors<false>(fp, kErrRot, {{&f.rot_rot, kErrRot}, {&f.rot_gyro_bias, kErrGyroBias}}, out);
   out.middleCols<6>(kErrGyroBias) = fp.middleCols<6>(kErrGyroBias);
   return out;
 }
