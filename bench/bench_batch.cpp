@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "sdlqr/batch/heap.hpp"
 #include "sdlqr/batch/runner.hpp"
 
 namespace sdlqr::batch {
@@ -28,6 +29,7 @@ const BatchContext& context() {
 }
 
 void BM_Flight(benchmark::State& state) {
+  keepFreedHeapMemory();  // as runBatch does
   double simulated = 0.0;
   int flight = 0;
   logger::FlightLog spare;  // as a batch worker: each flight records into the last one's memory

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <thread>
 
+#include "sdlqr/batch/heap.hpp"
 #include "sdlqr/batch/progress.hpp"
 #include "sdlqr/batch/summary.hpp"
 
@@ -21,6 +22,7 @@ struct Job {
 }  // namespace
 
 RunResult runBatch(const BatchContext& context, const RunOptions& options) {
+  keepFreedHeapMemory();
   Journal journal(options.out_dir, context, options.shard);
   std::vector<Job> jobs;
   long long shard_total = 0;
