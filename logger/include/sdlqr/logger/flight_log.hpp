@@ -97,9 +97,7 @@ struct FlightLog {
     return std::tie(imu, vio_pose, state_estimate, rate_command, motor_command, gains, reference, trajectory,
                     disturbance, params, command, heartbeat, sim_truth, sim_clock);
   }
-  // Whether the log has a series of message type Msg, and that series.
-  template <class Msg>
-  static constexpr bool kRecords = detail::TupleHas<Series<Msg>&, decltype(std::declval<FlightLog&>().allSeries())>::value;
+  // The series of message type Msg (FlightLogRecords<Msg> says whether there is one).
   template <class Msg>
   Series<Msg>& series() {
     return std::get<Series<Msg>&>(allSeries());
@@ -121,5 +119,11 @@ struct FlightLog {
   // Input for computeLogMetrics (metrics.hpp) restricted to what was decoded.
   MetricsInput metricsInput() const;
 };
+
+// Whether a FlightLog has a series of message type Msg. Outside the struct: within it the struct
+// is incomplete, and clang (the sanitizer build) refuses allSeries() there.
+template <class Msg>
+inline constexpr bool kFlightLogRecords =
+    detail::TupleHas<Series<Msg>&, decltype(std::declval<FlightLog&>().allSeries())>::value;
 
 }  // namespace sdlqr::logger
