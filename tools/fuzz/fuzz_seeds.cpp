@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "message_types.hpp"
+#include "sdlqr/config/cli.hpp"
 
 namespace {
 
@@ -39,11 +40,15 @@ void writeAll(const std::string& dir, std::index_sequence<I...>) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: fuzz_seeds DIR\n");
+  std::vector<std::string> folder;
+  ArgParser parser("fuzz_seeds", "Write the seed corpus of fuzz_messages into DIR (an existing folder).");
+  parser.allowPositional(&folder, "DIR");
+  parser.parseOrExit(argc, argv);
+  if (folder.size() != 1) {
+    std::fprintf(stderr, "fuzz_seeds: expected one folder DIR (see --help)\n");
     return 2;
   }
-  const std::string dir = argv[1];
+  const std::string dir = folder.front();
   writeAll(dir, std::make_index_sequence<fuzz::kBusTypeCount>{});
   Trajectory trajectory;
   trajectory.samples.resize(3);

@@ -4,7 +4,8 @@
 # (short: munge's socket path has a length limit). cluster_up exports SLURM_CONF for the clients;
 # cluster_down stops every job and daemon it started and removes the folder.
 #   cluster_up CPUS     cluster_down [KEEP_LOGS_IN]
-# (The fixes that make it work in a network namespace: /work/shared/NOTES.md, Slurm.)
+# (In a network namespace with only lo up, Slurm needs CommunicationParameters below; munged's socket
+# folder must be mode 755.)
 
 CLUSTER_DIR="" CLUSTER_PIDS=()
 
@@ -29,7 +30,8 @@ cluster_up() {
 # One node for the sdlqr slurm tests (tests/integration/slurm/one_node_cluster.sh)
 ClusterName=sdlqr-test
 SlurmctldHost=$host(127.0.0.1)
-# Only lo is up in the test's namespace: IPv4 look-ups of 127.0.0.1 need this (NOTES.md).
+# Only lo is up in the test's namespace: IPv4 look-ups with AI_ADDRCONFIG ignore loopback, and
+# Slurm hangs resolving 127.0.0.1 without this.
 CommunicationParameters=EnableIPv4,EnableIPv6
 AuthType=auth/munge
 AuthInfo=socket=$CLUSTER_DIR/munge/socket

@@ -22,7 +22,7 @@ struct Deployment {
   std::string lcm_url;     // udpm with ttl >= 1 as soon as there is more than one host
   int prefix_length = 24;  // of the segment the host addresses share
   std::string monitor;     // host of the launcher's own bus tools (calibration, heartbeat wait)
-  // A signed bus (README, Signed bus): key `signing`, by default on across hosts, off on one.
+  // A signed bus (docs/hosts-and-signing.md, Signed bus): key `signing`, by default on across hosts, off on one.
   bool signing = true;
   std::vector<Host> hosts;
 
