@@ -70,7 +70,7 @@ class Simulator {
 
  private:
   double thrustScale() const { return battery_.thrustScale() * stress_.plant.thrust_scale; }
-  Wrench wrenchOf(const Vec4& thrust, const BodyState& s, int64_t start_utime) const;
+  Wrench wrenchOf(const RotorWrench::Load& rotors, const BodyState& s, int64_t start_utime) const;
 
   VehicleParams vehicle_;  // what the stack assumes: MOTOR_CMD checks, the battery's calibration
   SimParams params_;
