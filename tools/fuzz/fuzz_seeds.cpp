@@ -1,6 +1,8 @@
-// Writes the seed corpus of fuzz_messages: for every bus type, the selector byte and the encoding
-// of a default message (and of a short trajectory), so the fuzzer starts past the fingerprints.
-//   fuzz_seeds DIR
+// Writes the seed corpora: of fuzz_messages, for every bus type, the selector byte and the encoding
+// of a default message (and of a short trajectory), so the fuzzer starts past the fingerprints; of
+// fuzz_mavlink (with MAVLINK_DIR), one frame of every MAVLink message, to the parser and through the
+// bridge, so it starts past the checksums.
+//   fuzz_seeds DIR [MAVLINK_DIR]
 
 #include <cstdio>
 #include <fstream>
@@ -10,6 +12,8 @@
 #include <vector>
 
 #include "message_types.hpp"
+#include "sdlqr/mavlink/frame.hpp"
+#include "sdlqr/mavlink/messages.hpp"
 
 namespace {
 
@@ -36,13 +40,31 @@ void writeAll(const std::string& dir, std::index_sequence<I...>) {
   (write(dir, static_cast<int>(I), defaultMessage<std::tuple_element_t<I, fuzz::BusTypes>>()), ...);
 }
 
+void writeMavlink(const std::string& dir) {
+  mavlink::FrameWriter writer(mavlink::Address{1, 1});
+  std::apply([&](auto... messages) {
+    auto one = [&](auto message) {
+      uint8_t frame[mavlink::kMaxFrameSize + 1];
+      const size_t size = writer.write(message, 0, frame + 1);
+      for (uint8_t selector : {0, 4}) {  // the parser alone, through the bridge (fuzz_mavlink.cpp)
+        frame[0] = selector;
+        std::ofstream(dir + "/seed_" + std::to_string(selector) + "_" + std::string(decltype(message)::kName),
+                      std::ios::binary)
+            .write(reinterpret_cast<const char*>(frame), static_cast<std::streamsize>(size + 1));
+      }
+    };
+    (one(messages), ...);
+  }, mavlink::AllMessages{});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: fuzz_seeds DIR\n");
+  if (argc != 2 && argc != 3) {
+    std::fprintf(stderr, "usage: fuzz_seeds DIR [MAVLINK_DIR]\n");
     return 2;
   }
+  if (argc == 3) writeMavlink(argv[2]);
   const std::string dir = argv[1];
   writeAll(dir, std::make_index_sequence<fuzz::kBusTypeCount>{});
   Trajectory trajectory;

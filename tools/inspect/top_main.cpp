@@ -56,6 +56,27 @@ int waitForHeartbeats(bus::Node& bus, const std::string& names, double timeout_s
   return 1;
 }
 
+// --until-sim-time: returns once a SIM_TRUTH of this vehicle at or past `sim_s` has been heard
+// (injected faults are timed on simulation time), or says how far the clock got on timeout. Raw:
+// a signed bus's trailer is ignored by the decode, so no key is needed to read the clock.
+int waitForSimTime(bus::Node& bus, double sim_s, double timeout_s) {
+  const int64_t target = static_cast<int64_t>(sim_s * 1e6 + 0.5);
+  int64_t newest = -1;
+  bus.subscribeRaw(bus.channel(channel::kSimTruth), [&](const std::string&, const void* data, uint32_t size, int64_t) {
+    sim_truth_t truth;
+    if (truth.decode(data, 0, static_cast<int>(size)) >= 0) newest = std::max(newest, truth.utime);
+  }, 16);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (newest < target && bus.spin(5)) {
+    if (std::chrono::steady_clock::now() > deadline) break;
+  }
+  bus.shutdown();
+  if (newest >= target) return 0;
+  std::cerr << "sdlqr-top: simulation time " << sim_s << " s not reached within " << timeout_s << " s (newest SIM_TRUTH "
+            << 1e-6 * static_cast<double>(newest) << " s)\n";
+  return 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -66,6 +87,7 @@ int main(int argc, char** argv) {
     bool plain = false;
     std::string wait_for;
     double wait_timeout_s = 10.0;
+    double until_sim_s = -1.0;
     ArgParser parser("sdlqr-top",
                      "Terminal view of the bus: once a second each channel's rate, the age of its newest\n"
                      "message and its size, and each process's HEARTBEAT (state, CPU, received, published,\n"
@@ -78,12 +100,20 @@ int main(int argc, char** argv) {
     parser.addOption("--wait-for", &wait_for, "P1,P2,...",
                      "only wait until each named process (e.g. sdlqr-estimator) has sent a HEARTBEAT on this\n"
                      "vehicle's channel, then exit 0 (1 after --timeout)");
-    parser.addOption("--timeout", &wait_timeout_s, "S", "for --wait-for, default 10 s of wall time");
+    parser.addOption("--until-sim-time", &until_sim_s, "T",
+                     "only wait until a SIM_TRUTH at or past simulation time T s is heard, then exit 0 (1 after\n"
+                     "--timeout): what times an injected fault (scripts/deploy --kill-at, --link-down-at)");
+    parser.addOption("--timeout", &wait_timeout_s, "S", "for --wait-for and --until-sim-time, default 10 s of wall time");
     parser.setEpilog("exit codes: 0 stopped by SIGINT/SIGTERM or --duration, 2 bad option");
     parser.parseOrExit(argc, argv);
     if (!(duration_s >= 0.0)) throw std::invalid_argument("--duration: must be >= 0, got " + std::to_string(duration_s));
     if (!(period_s >= 0.1)) throw std::invalid_argument("--period: must be >= 0.1 s, got " + std::to_string(period_s));
     const bool clear = !plain && ::isatty(STDOUT_FILENO);
+    if (until_sim_s >= 0.0) {
+      if (!(wait_timeout_s > 0.0)) throw std::invalid_argument("--timeout: must be > 0");
+      bus::Node bus("sdlqr-top", options);
+      return waitForSimTime(bus, until_sim_s, wait_timeout_s);
+    }
     if (!wait_for.empty()) {
       if (!(wait_timeout_s > 0.0)) throw std::invalid_argument("--timeout: must be > 0");
       bus::Node bus("sdlqr-top", options);
