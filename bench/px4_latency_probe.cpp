@@ -18,6 +18,7 @@
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/mavlink/dispatch.hpp"
 #include "sdlqr/px4/link_binding.hpp"
+#include "sdlqr/px4/px4_cli.hpp"
 #include "sdlqr/px4/px4_modes.hpp"
 
 using namespace sdlqr;
@@ -72,7 +73,8 @@ int main(int argc, char** argv) {
     parser.addOption("--seconds", &seconds, "S", "measuring time, wall seconds (default 10)");
     parser.parseOrExit(argc, argv);
     const auto io = px4::LinkIo::open(url);
-    px4::MavlinkEndpoint link({1, px4::kAutopilotComponent}, *io, [] { return uint64_t{0}; });
+    // Signed as the bridge is when SDLQR_MAVLINK_KEY names a key (bench/px4_latency --signed).
+    px4::MavlinkEndpoint link({1, px4::kAutopilotComponent}, *io, &px4::wallSigningTime, px4::loadLinkKey({}));
     bus::Node node("px4_latency_probe", options);
     std::map<int64_t, Clock::time_point> odometry_sent;       // time_usec -> write time
     std::map<uint32_t, Clock::time_point> setpoint_sent;

@@ -2,36 +2,13 @@
 // OUT.hpp (sdlqr/mavlink/messages.hpp), only when its content changed.
 
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
+#include "sdlqr/lcmgen/generated_file.hpp"
 #include "sdlqr/mavlinkgen/emit.hpp"
 
-namespace {
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw sdlqr::mavlinkgen::DefinitionError("cannot read " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void writeIfChanged(const std::filesystem::path& path, const std::string& content) {
-  std::ifstream existing(path, std::ios::binary);
-  if (existing) {
-    std::ostringstream old;
-    old << existing.rdbuf();
-    if (old.str() == content) return;
-  }
-  std::filesystem::create_directories(path.parent_path());
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << content;
-  if (!out) throw sdlqr::mavlinkgen::DefinitionError("cannot write " + path.string());
-}
-
-}  // namespace
+using sdlqr::lcmgen::readFile;
+using sdlqr::lcmgen::writeIfChanged;
 
 int main(int argc, char** argv) {
   if (argc < 3 || std::string(argv[1]) == "--help") {

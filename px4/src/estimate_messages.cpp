@@ -23,6 +23,13 @@ double sigma(float variance) { return variance >= 0.0f ? std::sqrt(static_cast<d
 
 uint32_t bootMilliseconds(int64_t utime) { return static_cast<uint32_t>(std::max<int64_t>(0, utime) / 1000); }
 
+// A vector into three float fields of a message.
+void put(const Vec3& v, float& x, float& y, float& z) {
+  x = static_cast<float>(v[0]);
+  y = static_cast<float>(v[1]);
+  z = static_cast<float>(v[2]);
+}
+
 }  // namespace
 
 StateEstimate estimateFromOdometry(const mavlink::Odometry& m, RejectReason* reason) {
@@ -74,18 +81,11 @@ mavlink::Odometry odometryFromEstimate(const StateEstimate& e) {
   m.time_usec = static_cast<uint64_t>(std::max<int64_t>(0, e.utime));
   m.frame_id = mavlink::mav_frame::kLocalNed;
   m.child_frame_id = mavlink::mav_frame::kLocalNed;
-  const Vec3 p = worldToNed(e.position), v = worldToNed(e.velocity), w = bodyToFrd(e.body_rate);
   const Quat q = worldBodyToNedFrd(e.orientation);
-  m.x = static_cast<float>(p[0]);
-  m.y = static_cast<float>(p[1]);
-  m.z = static_cast<float>(p[2]);
+  put(worldToNed(e.position), m.x, m.y, m.z);
   for (int i = 0; i < 4; ++i) m.q[i] = static_cast<float>(q[i]);
-  m.vx = static_cast<float>(v[0]);
-  m.vy = static_cast<float>(v[1]);
-  m.vz = static_cast<float>(v[2]);
-  m.rollspeed = static_cast<float>(w[0]);
-  m.pitchspeed = static_cast<float>(w[1]);
-  m.yawspeed = static_cast<float>(w[2]);
+  put(worldToNed(e.velocity), m.vx, m.vy, m.vz);
+  put(bodyToFrd(e.body_rate), m.rollspeed, m.pitchspeed, m.yawspeed);
   m.pose_covariance.fill(std::numeric_limits<float>::quiet_NaN());
   m.velocity_covariance.fill(std::numeric_limits<float>::quiet_NaN());
   const Vec3 ned_sigma = worldToNed(e.position_std).cwiseAbs();
@@ -100,13 +100,8 @@ mavlink::Odometry odometryFromEstimate(const StateEstimate& e) {
 mavlink::HighresImu highresImuFromImu(const ImuSample& imu) {
   mavlink::HighresImu m;
   m.time_usec = static_cast<uint64_t>(std::max<int64_t>(0, imu.utime));
-  const Vec3 a = bodyToFrd(imu.accel), w = bodyToFrd(imu.gyro);
-  m.xacc = static_cast<float>(a[0]);
-  m.yacc = static_cast<float>(a[1]);
-  m.zacc = static_cast<float>(a[2]);
-  m.xgyro = static_cast<float>(w[0]);
-  m.ygyro = static_cast<float>(w[1]);
-  m.zgyro = static_cast<float>(w[2]);
+  put(bodyToFrd(imu.accel), m.xacc, m.yacc, m.zacc);
+  put(bodyToFrd(imu.gyro), m.xgyro, m.ygyro, m.zgyro);
   m.fields_updated = 0x3F;  // accelerometer and gyro, the fields this emulator fills
   return m;
 }
@@ -114,13 +109,8 @@ mavlink::HighresImu highresImuFromImu(const ImuSample& imu) {
 mavlink::LocalPositionNed localPositionFromEstimate(const StateEstimate& e) {
   mavlink::LocalPositionNed m;
   m.time_boot_ms = bootMilliseconds(e.utime);
-  const Vec3 p = worldToNed(e.position), v = worldToNed(e.velocity);
-  m.x = static_cast<float>(p[0]);
-  m.y = static_cast<float>(p[1]);
-  m.z = static_cast<float>(p[2]);
-  m.vx = static_cast<float>(v[0]);
-  m.vy = static_cast<float>(v[1]);
-  m.vz = static_cast<float>(v[2]);
+  put(worldToNed(e.position), m.x, m.y, m.z);
+  put(worldToNed(e.velocity), m.vx, m.vy, m.vz);
   return m;
 }
 
@@ -132,10 +122,7 @@ mavlink::AttitudeQuaternion attitudeFromEstimate(const StateEstimate& e) {
   m.q2 = static_cast<float>(q[1]);
   m.q3 = static_cast<float>(q[2]);
   m.q4 = static_cast<float>(q[3]);
-  const Vec3 w = bodyToFrd(e.body_rate);
-  m.rollspeed = static_cast<float>(w[0]);
-  m.pitchspeed = static_cast<float>(w[1]);
-  m.yawspeed = static_cast<float>(w[2]);
+  put(bodyToFrd(e.body_rate), m.rollspeed, m.pitchspeed, m.yawspeed);
   return m;
 }
 

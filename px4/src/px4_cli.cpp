@@ -18,6 +18,10 @@ void addLinkOptions(ArgParser& parser, LinkOptions* o, const char* url_help) {
   parser.addOption("--link-id", &o->link_id, "N", "MAVLink signing link id, 0-255 (default 0)");
 }
 
+void checkLinkOptions(const LinkOptions& o) {
+  if (o.link_id < 0 || o.link_id > 255) throw std::invalid_argument("--link-id: must be in [0, 255]");
+}
+
 }  // namespace
 
 BridgeCommandLine parseBridgeCommandLine(int argc, const char* const* argv) {
@@ -43,7 +47,7 @@ BridgeCommandLine parseBridgeCommandLine(int argc, const char* const* argv) {
                    "fit px4.thrust.hover_throttle to the hover of a flight log (docs/px4.md) and exit");
   parser.setEpilog("Exit codes: 0 stopped (SIGINT/SIGTERM), 2 bad option, configuration or key, 1 runtime error.");
   parser.parseOrExit(argc, argv);
-  if (o.link.link_id < 0 || o.link.link_id > 255) throw std::invalid_argument("--link-id: must be in [0, 255]");
+  checkLinkOptions(o.link);
   if (clock != "vehicle" && clock != "start") throw std::invalid_argument("--clock: expected vehicle or start, got '" + clock + "'");
   o.clock_from_start = clock == "start";
   return o;
@@ -66,7 +70,7 @@ EmulatorCommandLine parseEmulatorCommandLine(int argc, const char* const* argv) 
   parser.addOption("--rate", &o.rate, "FACTOR", "simulated seconds per wall second (default 1)");
   parser.setEpilog("Exit codes: 0 stopped (SIGINT/SIGTERM), 2 bad option, configuration or key, 1 runtime error.");
   parser.parseOrExit(argc, argv);
-  if (o.link.link_id < 0 || o.link.link_id > 255) throw std::invalid_argument("--link-id: must be in [0, 255]");
+  checkLinkOptions(o.link);
   if (!(o.rate > 0.0 && o.rate <= 1000.0)) throw std::invalid_argument("--rate: must be in (0, 1000]");
   if (o.seed < -1) throw std::invalid_argument("--seed: must be >= 0");
   return o;
