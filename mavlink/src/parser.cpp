@@ -40,9 +40,14 @@ void Parser::drop(FrameDrop reason, size_t count) {
 void Parser::endDatagram() {
   if (have_ == 0) return;
   drop(FrameDrop::kTruncated, have_);
+  need_ = 1;
 }
 
 bool Parser::next(uint64_t now) {
+  const auto wait_for = [this](size_t bytes) {
+    need_ = bytes;
+    return false;
+  };
   while (have_ > 0) {
     const uint8_t marker = buffer_[0];
     if (marker != kStartMarker && marker != kStartMarkerV1) {
@@ -51,7 +56,7 @@ bool Parser::next(uint64_t now) {
       continue;
     }
     if (marker == kStartMarkerV1) {
-      if (have_ < kHeaderSizeV1) return false;
+      if (have_ < kHeaderSizeV1) return wait_for(kHeaderSizeV1);
       const MessageInfo* info = findMessage(buffer_[5]);
       if (info == nullptr || buffer_[1] > info->max_length) {
         ++counts_.skipped_bytes;
@@ -59,7 +64,7 @@ bool Parser::next(uint64_t now) {
         continue;
       }
       const size_t total = kHeaderSizeV1 + buffer_[1] + kChecksumSize;
-      if (have_ < total) return false;
+      if (have_ < total) return wait_for(total);
       const bool intact = checksumMatches(1, kHeaderSizeV1 - 1 + buffer_[1], *info);
       if (intact) {
         drop(FrameDrop::kVersion1, total);
@@ -69,7 +74,7 @@ bool Parser::next(uint64_t now) {
       }
       continue;
     }
-    if (have_ < kHeaderSize) return false;
+    if (have_ < kHeaderSize) return wait_for(kHeaderSize);
     const uint8_t length = buffer_[1];
     const uint8_t incompat = buffer_[2];
     if ((incompat & ~kIncompatSigned) != 0) {
@@ -89,10 +94,10 @@ bool Parser::next(uint64_t now) {
       continue;
     }
     const size_t total = kHeaderSize + length + kChecksumSize + ((incompat & kIncompatSigned) ? kSignatureSize : 0);
-    if (have_ < total) return false;
+    if (have_ < total) return wait_for(total);
     if (completeFrame(total, *info, now)) return true;
   }
-  return false;
+  return wait_for(1);
 }
 
 bool Parser::checksumMatches(size_t from, size_t count, const MessageInfo& info) const {

@@ -16,8 +16,10 @@
 // the next start marker inside the bytes it had taken, so nothing unproven hides a good frame. Clock-free: `now` (the signing
 // clock, signing.hpp) is passed in.
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstring>
 #include <cstdint>
 #include <optional>
 
@@ -76,8 +78,13 @@ class Parser {
   // Takes `size` bytes; calls on_frame(const Frame&) for each frame that passes.
   template <class OnFrame>
   void feed(const uint8_t* data, size_t size, uint64_t now, OnFrame&& on_frame) {
-    for (size_t i = 0; i < size; ++i) {
-      buffer_[have_++] = data[i];
+    while (size > 0) {
+      // As many bytes as the frame begun needs (one when nothing is begun), then look at them.
+      const size_t take = std::min(size, need_ - have_);
+      std::memcpy(buffer_.data() + have_, data, take);
+      have_ += take;
+      data += take;
+      size -= take;
       while (next(now)) on_frame(static_cast<const Frame&>(frame_));
     }
   }
@@ -89,7 +96,7 @@ class Parser {
 
  private:
   // Looks at the buffered bytes: true when frame_ holds a new frame (and its bytes were consumed);
-  // false when more bytes are needed. Drops what cannot start a frame.
+  // false when more bytes are needed (need_ says how many in all). Drops what cannot start a frame.
   bool next(uint64_t now);
   bool completeFrame(size_t total, const MessageInfo& info, uint64_t now);
   // The CRC of `count` bytes from `from` (plus the CRC extra) equals the two bytes after them.
@@ -99,6 +106,7 @@ class Parser {
 
   std::array<uint8_t, kMaxFrameSize> buffer_{};
   size_t have_ = 0;
+  size_t need_ = 1;  // bytes next() needs buffered to get further: always > have_ after it
   Frame frame_;
   ParserCounts counts_;
   std::optional<SigningKey> key_;
