@@ -28,15 +28,16 @@ namespace {
 
 double microseconds(Clock::duration d) { return std::chrono::duration<double, std::micro>(d).count(); }
 
-void report(const char* what, std::vector<double> samples) {
+// `sent` messages went in; samples holds the latency of each that came out (matched).
+void report(const char* what, int64_t sent, std::vector<double> samples) {
   if (samples.empty()) {
-    std::printf("%-44s no samples\n", what);
+    std::printf("%-44s %lld sent, none came out\n", what, static_cast<long long>(sent));
     return;
   }
   std::sort(samples.begin(), samples.end());
   const auto at = [&](double q) { return samples[static_cast<size_t>(q * static_cast<double>(samples.size() - 1))]; };
-  std::printf("%-44s n %6zu  median %7.1f us  p99 %7.1f us  max %8.1f us\n", what, samples.size(), at(0.5), at(0.99),
-              samples.back());
+  std::printf("%-44s %6zu of %6lld  median %7.1f us  p99 %7.1f us  max %8.1f us\n", what, samples.size(),
+              static_cast<long long>(sent), at(0.5), at(0.99), samples.back());
 }
 
 // PX4's side of the link, as little as the bridge needs.
@@ -93,7 +94,7 @@ int main(int argc, char** argv) {
     });
     const auto start = Clock::now();
     auto next_odometry = start, next_command = start, next_heartbeat = start;
-    int64_t utime = 1'000'000, command_seq = 0;
+    int64_t utime = 1'000'000, command_seq = 0, commanded_estimate = -1;
     while (node.running() && Clock::now() - start < std::chrono::duration<double>(seconds)) {
       const auto now = Clock::now();
       if (now >= next_heartbeat) {
@@ -118,7 +119,9 @@ int main(int argc, char** argv) {
         link.send(o);
         next_odometry += std::chrono::microseconds(4000);
       }
-      if (now >= next_command && newest_estimate >= 0) {
+      // One command per estimate (the controller's own rule): each SET_ATTITUDE_TARGET then matches one.
+      if (now >= next_command && newest_estimate > commanded_estimate) {
+        commanded_estimate = newest_estimate;
         RateCommand r;
         r.utime = newest_estimate;
         r.seq = command_seq++;
@@ -130,8 +133,8 @@ int main(int argc, char** argv) {
       const auto wake = std::min({next_heartbeat, next_odometry, next_command});
       node.spin(std::max(0, static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(wake - Clock::now()).count())));
     }
-    report("ODOMETRY on the wire -> STATE_EST on the bus", inbound);
-    report("RATE_CMD on the bus -> SET_ATTITUDE_TARGET on the wire", outbound);
+    report("ODOMETRY on the wire -> STATE_EST on the bus", (utime - 1'000'000) / 4000, inbound);
+    report("RATE_CMD on the bus -> SET_ATTITUDE_TARGET on the wire", command_seq, outbound);
     node.shutdown();
     return inbound.empty() || outbound.empty() ? 1 : 0;
   });
