@@ -33,6 +33,7 @@ struct BridgeParams {
   static const ParamTable<BridgeParams>& declaration();
   static BridgeParams load(const ConfigReader& px4) { return declaration().load(px4); }
   std::string invalidReason() const { return declaration().invalidReason(*this); }
+  bool valid() const { return invalidReason().empty(); }
 };
 
 }  // namespace sdlqr::px4

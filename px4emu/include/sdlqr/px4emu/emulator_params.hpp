@@ -23,6 +23,7 @@ struct EmulatorParams {
   static const ParamTable<EmulatorParams>& declaration();
   static EmulatorParams load(const ConfigReader& section) { return declaration().load(section); }
   std::string invalidReason() const { return declaration().invalidReason(*this); }
+  bool valid() const { return invalidReason().empty(); }
 };
 
 inline constexpr int kLandAction = 4;  // COM_OBL_RC_ACT
