@@ -94,6 +94,16 @@ TEST_F(BridgeTest, AsksForItsStreamsAtTheRatesItNeeds) {
   EXPECT_EQ(sent.commands[0].target_system, 1);
 }
 
+TEST_F(BridgeTest, ItsOwnHeartbeatIsAnOnboardControllerOnceASecond) {
+  connect();
+  run(3.05, false, FlightMode{}, kOnGround);
+  const auto sent = take(sink_);
+  ASSERT_EQ(sent.heartbeats.size(), 3u);  // at 1, 2 and 3 s (the first went out at 0 s)
+  EXPECT_EQ(sent.heartbeats[0].type, mavlink::mav_type::kOnboardController);
+  EXPECT_EQ(sent.heartbeats[0].autopilot, mavlink::mav_autopilot::kInvalid);
+  EXPECT_EQ(sent.heartbeats[0].mavlink_version, 3);
+}
+
 TEST_F(BridgeTest, HandshakeStreamsOverASecondThenAsksOffboardThenArms) {
   connect();
   bridge_.onCommand(command(CommandType::kArm));
