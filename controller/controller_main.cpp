@@ -1,6 +1,5 @@
 // sdlqr-controller: binds the bus to the controller's core (controller/controller_core.hpp).
 
-#include <chrono>
 #include <iostream>
 
 #include "sdlqr/bus/core_binding.hpp"
@@ -32,13 +31,7 @@ int main(int argc, char** argv) {
     }
     ControllerCore core(lqr, params, faults, limits);
     bus::Node node("sdlqr-controller", options, core.health());
-    bus::CoreBinding<ControllerCore> bus(node, core);
-    // A tick that takes longer than the estimate period delays the next estimate's tick.
-    bus.bind(&ControllerCore::onStateEstimate, 1, std::chrono::microseconds(4000));
-    bus.bind(&ControllerCore::onGains, 4);
-    bus.bind(&ControllerCore::onCommand, 16);
-    bus.bind(&ControllerCore::onTrajectory, 2);
-    bus.bind(&ControllerCore::onParams, 16);
+    bus::CoreBinding<ControllerCore> bus(node, core);  // its ports: ControllerCore::inputs()
     std::cerr << "sdlqr-controller: running on " << node.channel(channel::kStateEstimate) << "\n";
     bus.serve(core.wallTimePeriodMs());  // short spins: the watchdog notices a silent estimator in time
     return 0;

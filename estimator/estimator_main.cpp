@@ -1,6 +1,5 @@
 // sdlqr-estimator: binds the bus to the estimator's core (estimator/estimator_core.hpp).
 
-#include <chrono>
 #include <iostream>
 
 #include "sdlqr/bus/core_binding.hpp"
@@ -28,12 +27,7 @@ int main(int argc, char** argv) {
     }
     EstimatorCore core(params);
     bus::Node node("sdlqr-estimator", options, core.health());
-    bus::CoreBinding<EstimatorCore> bus(node, core);
-    // Every IMU sample is integrated: 64 queued (64 ms at 1 kHz) ride out a descheduled process
-    // (a lost sample leaves a hole bridged only by interpolation); one handled slower than the
-    // IMU period is a missed deadline. Poses are few and each one is worth fusing, even late.
-    bus.bind(&EstimatorCore::onImu, 64, std::chrono::microseconds(1000));
-    bus.bind(&EstimatorCore::onVio, 4);
+    bus::CoreBinding<EstimatorCore> bus(node, core);  // its ports: EstimatorCore::inputs()
     bus.serve(100);
     return 0;
   });

@@ -2,7 +2,6 @@
 // solver's core (gains/gains_core.hpp), which solves at 10 Hz of simulation time and publishes
 // GAINS. One-shot mode (--once): solve at the given point and print one JSON object.
 
-#include <chrono>
 #include <iostream>
 #include <stdexcept>
 
@@ -44,12 +43,7 @@ int main(int argc, char** argv) {
     }
     GainsCore core(lqr, params, faults, limits, &bus::monotonicSeconds);
     bus::Node node("sdlqr-gains", options, core.health());
-    bus::CoreBinding<GainsCore> bus(node, core);
-    // A solve that outlasts the estimate period makes the next estimate wait (the 10 Hz schedule
-    // itself has 100 ms of room).
-    bus.bind(&GainsCore::onStateEstimate, 1, std::chrono::microseconds(4000));
-    bus.bind(&GainsCore::onReference);
-    bus.bind(&GainsCore::onParams, 16);
+    bus::CoreBinding<GainsCore> bus(node, core);  // its ports: GainsCore::inputs()
     std::cerr << "sdlqr-gains: solving at " << params.rate_hz << " Hz on " << node.channel(channel::kStateEstimate) << " (" << toString(lqr.method)
               << " method)\n";
     bus.serve(20);

@@ -1,6 +1,5 @@
 // sdlqr-lowlevel: binds the bus to the bodyrate loop's core (lowlevel/lowlevel_core.hpp).
 
-#include <chrono>
 #include <iostream>
 
 #include "sdlqr/bus/core_binding.hpp"
@@ -37,11 +36,7 @@ int main(int argc, char** argv) {
     }
     LowlevelCore core(vehicle, params, lqr.gravity, faults, limits);
     bus::Node node("sdlqr-lowlevel", options, core.health());
-    bus::CoreBinding<LowlevelCore> bus(node, core);
-    bus.bind(&LowlevelCore::onImu, 64, std::chrono::microseconds(1000));  // a step longer than the IMU period
-    bus.bind(&LowlevelCore::onRateCommand, 1);                            // is a missed deadline
-    bus.bind(&LowlevelCore::onCommand, 16);
-    bus.bind(&LowlevelCore::onParams, 16);
+    bus::CoreBinding<LowlevelCore> bus(node, core);  // its ports: LowlevelCore::inputs()
     bus.serve(core.wallTimePeriodMs());
     return 0;
   });

@@ -39,13 +39,7 @@ int main(int argc, char** argv) {
     if (describe_only) return mission::printDescription(scenario, vehicle_path);
 
     bus::Node node("sdlqr-mission", options, core.health());
-    bus::NodeOutbox outbox(node);
-    node.subscribe<sim_clock_t>(channel::kSimClock, [&](const sim_clock_t& c) { core.onClock(c.utime, outbox); });
-    // Throw mode only: every estimate counts for the detector's acceleration, so a short queue.
-    if (core.watchesEstimates()) {
-      node.subscribe<state_estimate_t>(
-          channel::kStateEstimate, [&](const state_estimate_t& m) { core.onStateEstimate(bus::fromLcm(m), outbox); }, 8);
-    }
+    bus::CoreBinding<mission::MissionCore> bus(node, core);  // its ports: MissionCore::inputs()
     core.setObserver(&mission::logEventToStderr);
     core.setThrowObserver(&mission::logThrowToStderr);
     std::fprintf(stderr, "sdlqr-mission: scenario '%s', %zu events, %.1f s\n", scenario.name.c_str(),

@@ -35,9 +35,7 @@ int main(int argc, char** argv) {
                                   &px4::wallSigningTime, key, static_cast<uint8_t>(options.link.link_id));
     BridgeCore core(params, lqr.gravity, limits, endpoint, {options.bench, options.clock_from_start});
     bus::Node node("sdlqr-px4", options.process, core.health());
-    bus::CoreBinding<BridgeCore> bus(node, core);
-    bus.bind(&BridgeCore::onRateCommand, 1);
-    bus.bind(&BridgeCore::onCommand, 16);
+    bus::CoreBinding<BridgeCore> bus(node, core);  // its ports: BridgeCore::inputs()
     px4::bindLink(node, *io, endpoint, [&](const uint8_t* data, size_t size, bool datagram) {
       core.onWallTime(bus::monotonicSeconds());
       core.onBytes(data, size, datagram, bus.outbox());

@@ -32,8 +32,7 @@ int main(int argc, char** argv) {
                                   &px4::wallSigningTime, key, static_cast<uint8_t>(options.link.link_id));
     EmulatorCore core(config, stress, endpoint);
     bus::Node node("sdlqr-px4-emulator", options.process, core.health());
-    bus::CoreBinding<EmulatorCore> bus(node, core);
-    bus.bind(&EmulatorCore::onDisturbance, 16);
+    bus::CoreBinding<EmulatorCore> bus(node, core);  // its ports: EmulatorCore::inputs()
     px4::bindLink(node, *io, endpoint,
                   [&](const uint8_t* data, size_t size, bool datagram) { core.onBytes(data, size, datagram); });
     std::cerr << "sdlqr-px4-emulator: MAVLink " << io->describe() << (key ? ", signed" : ", unsigned") << ", "

@@ -1,5 +1,5 @@
 // sdlqr-sim: the plant on the bus. Paces the simulator's core (sim/sim_core.hpp) against the wall
-// clock by --rate and binds MOTOR_CMD and DISTURBANCE to it.
+// clock by --rate and binds the bus to its ports (MOTOR_CMD, DISTURBANCE).
 
 #include <cmath>
 #include <iostream>
@@ -8,7 +8,6 @@
 #include "sdlqr/bus/paced_loop.hpp"
 #include "sdlqr/config/config.hpp"
 #include "sdlqr/config/print_config.hpp"
-#include "sdlqr/mission/scenario.hpp"
 #include "sdlqr/sim/sim_cli.hpp"
 #include "sdlqr/sim/sim_core.hpp"
 
@@ -29,16 +28,11 @@ int main(int argc, char** argv) {
     }
     // The scenario's simulated world (plant mismatch, wind, airborne start, throw), if one is named.
     const sim::SimStress stress =
-        options.scenario_path.empty() ? sim::SimStress() : mission::Scenario::load(options.scenario_path).sim;
+        options.scenario_path.empty() ? sim::SimStress() : sim::SimStress::loadFromScenario(options.scenario_path);
     SimCore core(vehicle, params, stress);
 
     bus::Node node("sdlqr-sim", options.process, core.health());
-    bus::CoreBinding<SimCore> bus(node, core);
-    // Every motor command is checked and counted, the newest applies: a queue of one kept the
-    // oldest of each batch the bus read and dropped the rest (Node::drainInbox), 11,315 of a 52 s
-    // flight on a busy machine, among them a hostile NaN command the sim never judged.
-    bus.bind(&SimCore::onMotorCommand, 8);
-    bus.bind(&SimCore::onDisturbance, 16);  // every request matters: they queue, not replace
+    bus::CoreBinding<SimCore> bus(node, core);  // its ports: SimCore::inputs()
     std::cerr << "sdlqr-sim: " << params.physics_rate_hz << " Hz physics, rate x" << options.rate << ", seed "
               << params.seed << ", channel prefix '" << options.process.vehicle << "'\n";
     node.publishHeartbeat();

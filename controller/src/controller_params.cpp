@@ -2,6 +2,8 @@
 
 #include <array>
 
+#include "sdlqr/math/in_flight.hpp"
+
 namespace sdlqr::controller {
 
 namespace {
@@ -45,9 +47,7 @@ const ParamTable<ControllerParams>& ControllerParams::declaration() {
              "a rejoin levels and stops the vehicle before it holds: tilted at most this ...");
     t.number("recovery_speed", &P::recovery_speed, 0.5, "m/s", Range::above(0.0),
              "... and moving at most this, the hold is set where the vehicle is");
-    t.choice("tracking", &P::tracking, ReferenceMode::kSpatial,
-             {{"spatial", ReferenceMode::kSpatial}, {"temporal", ReferenceMode::kTemporal}},
-             "reference scheme of trajectories that do not say (spatial or temporal)");
+    declareTracking(t, &P::tracking);  // in flight: every process that checks PARAMS knows it
     t.section("guard", &P::guard);
     t.number("switch_time_s", &P::switch_time_s, 0.5, "s", Range::closed(0.0, 5.0),
              "a law switch's command offset decays to zero over this time (0: the command jumps)");

@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
   if (argc < 3 || std::string(argv[1]) == "--help") {
     std::cout << "usage: sdlqr_lcmtypes_gen OUT_DIR FILE.lcm...\n\n"
                  "Writes OUT_DIR/<package>/lcmtypes/generated/{plain,plain_fields,descriptors,lcm_fields,\n"
-                 "wire_fits,convert}.hpp from the LCM definitions of one package (their @ annotations:\n"
+                 "wire_fits,convert,channels,outbox,json_schemas}.hpp from the LCM definitions of one package (their @ annotations:\n"
                  "lcmtypes/gen/include/sdlqr/lcmgen/schema.hpp); exit code 2 with file:line on a\n"
                  "definition it cannot describe.\n";
     return argc < 3 ? 2 : 0;

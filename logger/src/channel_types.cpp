@@ -4,23 +4,13 @@
 
 namespace sdlqr::logger {
 
+// One entry per channel of lcmtypes/*.lcm (kChannels, generated from their @channel).
 const std::vector<ChannelType>& channelTypes() {
-  static const std::vector<ChannelType> table = {
-      {channel::kImu, MessageType::kImu, "imu_t"},
-      {channel::kVioPose, MessageType::kVioPose, "vio_pose_t"},
-      {channel::kStateEstimate, MessageType::kStateEstimate, "state_estimate_t"},
-      {channel::kRateCommand, MessageType::kRateCommand, "rate_cmd_t"},
-      {channel::kMotorCommand, MessageType::kMotorCommand, "motor_cmd_t"},
-      {channel::kGains, MessageType::kGains, "gains_t"},
-      {channel::kReference, MessageType::kReference, "reference_t"},
-      {channel::kTrajectory, MessageType::kTrajectory, "trajectory_t"},
-      {channel::kDisturbance, MessageType::kDisturbance, "disturbance_t"},
-      {channel::kParams, MessageType::kParams, "params_t"},
-      {channel::kCommand, MessageType::kCommand, "command_t"},
-      {channel::kHeartbeat, MessageType::kHeartbeat, "heartbeat_t"},
-      {channel::kSimTruth, MessageType::kSimTruth, "sim_truth_t"},
-      {channel::kSimClock, MessageType::kSimClock, "sim_clock_t"},
-  };
+  static const std::vector<ChannelType> table = [] {
+    std::vector<ChannelType> out;
+    for (const ChannelInfo& c : kChannels) out.push_back({c.name, c.stream, c.lcm_type});
+    return out;
+  }();
   return table;
 }
 

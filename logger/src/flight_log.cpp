@@ -34,43 +34,31 @@ void decodeInto(const LogEvent& event, Series<Plain>& series, ChannelTimeline& t
   series.receive_utime.push_back(event.receive_utime);
 }
 
-void decode(MessageType type, const LogEvent& e, FlightLog& log, ChannelTimeline& t) {
-  switch (type) {
-    case MessageType::kImu: decodeInto<imu_t>(e, log.imu, t); break;
-    case MessageType::kVioPose: decodeInto<vio_pose_t>(e, log.vio_pose, t); break;
-    case MessageType::kStateEstimate: decodeInto<state_estimate_t>(e, log.state_estimate, t); break;
-    case MessageType::kRateCommand: decodeInto<rate_cmd_t>(e, log.rate_command, t); break;
-    case MessageType::kMotorCommand: decodeInto<motor_cmd_t>(e, log.motor_command, t); break;
-    case MessageType::kGains: decodeInto<gains_t>(e, log.gains, t); break;
-    case MessageType::kReference: decodeInto<reference_t>(e, log.reference, t); break;
-    case MessageType::kTrajectory: decodeInto<trajectory_t>(e, log.trajectory, t); break;
-    case MessageType::kDisturbance: decodeInto<disturbance_t>(e, log.disturbance, t); break;
-    case MessageType::kParams: decodeInto<params_t>(e, log.params, t); break;
-    case MessageType::kCommand: decodeInto<command_t>(e, log.command, t); break;
-    case MessageType::kHeartbeat: decodeInto<heartbeat_t>(e, log.heartbeat, t); break;
-    case MessageType::kSimTruth: decodeInto<sim_truth_t>(e, log.sim_truth, t); break;
-    case MessageType::kSimClock: decodeInto<sim_clock_t>(e, log.sim_clock, t); break;
-    case MessageType::kOther:
-    case MessageType::kCount: break;
-  }
+template <class Plain>
+void decodeIfOfStream(Stream stream, const LogEvent& event, Series<Plain>& series, ChannelTimeline& timeline) {
+  if (stream == streamOf<Plain>()) decodeInto<bus::LcmOf<Plain>>(event, series, timeline);
+}
+
+void decode(Stream stream, const LogEvent& e, FlightLog& log, ChannelTimeline& t) {
+  std::apply([&](auto&... series) { (decodeIfOfStream(stream, e, series, t), ...); }, log.allSeries());
 }
 
 }  // namespace
 
-bool decodeMessage(const LogEvent& e, ImuSample* out) { return decodeAs<imu_t>(e, out); }
-bool decodeMessage(const LogEvent& e, VioPose* out) { return decodeAs<vio_pose_t>(e, out); }
-bool decodeMessage(const LogEvent& e, StateEstimate* out) { return decodeAs<state_estimate_t>(e, out); }
-bool decodeMessage(const LogEvent& e, RateCommand* out) { return decodeAs<rate_cmd_t>(e, out); }
-bool decodeMessage(const LogEvent& e, MotorCommand* out) { return decodeAs<motor_cmd_t>(e, out); }
-bool decodeMessage(const LogEvent& e, GainSet* out) { return decodeAs<gains_t>(e, out); }
-bool decodeMessage(const LogEvent& e, Reference* out) { return decodeAs<reference_t>(e, out); }
-bool decodeMessage(const LogEvent& e, Trajectory* out) { return decodeAs<trajectory_t>(e, out); }
-bool decodeMessage(const LogEvent& e, Disturbance* out) { return decodeAs<disturbance_t>(e, out); }
-bool decodeMessage(const LogEvent& e, ParamsUpdate* out) { return decodeAs<params_t>(e, out); }
-bool decodeMessage(const LogEvent& e, Command* out) { return decodeAs<command_t>(e, out); }
-bool decodeMessage(const LogEvent& e, HeartbeatRecord* out) { return decodeAs<heartbeat_t>(e, out); }
-bool decodeMessage(const LogEvent& e, SimTruth* out) { return decodeAs<sim_truth_t>(e, out); }
-bool decodeMessage(const LogEvent& e, SimClockTick* out) { return decodeAs<sim_clock_t>(e, out); }
+template <class Plain>
+bool decodeMessage(const LogEvent& event, Plain* out) {
+  return decodeAs<bus::LcmOf<Plain>>(event, out);
+}
+
+namespace detail {
+// decodeMessage<Msg> of every message type with a channel, for the other translation units (an
+// object with external linkage keeps the instantiations it points at).
+template <class... Msg>
+constexpr auto decoders(MessageTypes<Msg...>) {
+  return std::tuple{&decodeMessage<Msg>...};
+}
+extern const auto kDecoders = decoders(ChannelTypes{});
+}  // namespace detail
 
 FlightLog FlightLog::load(const std::string& path, const std::string& vehicle) {
   FlightLog log;

@@ -98,11 +98,7 @@ std::unique_ptr<ChannelSink> makeSink(std::string_view lcm_type, const fs::path&
 ExportResult exportLog(const ExportOptions& options) {
   LogReader reader(options.log_path);
   LogEvent event;
-  bool have_event = reader.next(&event);
-  if (!have_event) {
-    throw LogError("'" + options.log_path + "' holds no LCM event" +
-                   std::string(reader.status().file_bytes == 0 ? " (empty file)" : " (not an LCM event log?)"));
-  }
+  readFirstEvent(reader, &event);
   const fs::path out_dir = options.out_dir;
   std::error_code error;
   fs::create_directories(out_dir, error);
@@ -110,9 +106,8 @@ ExportResult exportLog(const ExportOptions& options) {
 
   MetricsInput input;
   std::unordered_map<std::string, ChannelState> channels;
-  int next_report = 10;
-  const int64_t file_bytes = std::max<int64_t>(1, reader.status().file_bytes);
-  for (; have_event; have_event = reader.next(&event)) {
+  ReadProgress progress(options.progress);
+  for (bool have_event = true; have_event; have_event = reader.next(&event)) {
     const std::string name(event.channel);
     auto [it, inserted] = channels.try_emplace(name);
     ChannelState& state = it->second;
@@ -132,12 +127,7 @@ ExportResult exportLog(const ExportOptions& options) {
     ChannelTimeline& timeline = input.channels[state.timeline];
     timeline.addEvent(event.receive_utime, event.size);
     if (state.sink) state.sink->consume(event, timeline, input);
-    if (options.progress) {
-      while (next_report <= 100 && reader.position() * 100 >= next_report * file_bytes) {
-        options.progress(next_report, reader.status().events);
-        next_report += 10;
-      }
-    }
+    progress.update(reader);
   }
   input.log = reader.status();
 

@@ -3,6 +3,7 @@
 #include <lcm/eventlog.h>
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -64,6 +65,21 @@ bool LogReader::next(LogEvent* event) {
     event->data = static_cast<const uint8_t*>(e->data);
     event->size = e->datalen;
     return true;
+  }
+}
+
+void readFirstEvent(LogReader& reader, LogEvent* event) {
+  if (reader.next(event)) return;
+  throw LogError("'" + reader.status().path + "' holds no LCM event" +
+                 std::string(reader.status().file_bytes == 0 ? " (empty file)" : " (not an LCM event log?)"));
+}
+
+void ReadProgress::update(const LogReader& reader) {
+  if (!report_) return;
+  const int64_t file_bytes = std::max<int64_t>(1, reader.status().file_bytes);
+  while (next_percent_ <= 100 && reader.position() * 100 >= next_percent_ * file_bytes) {
+    report_(next_percent_, reader.status().events);
+    next_percent_ += 10;
   }
 }
 

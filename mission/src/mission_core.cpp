@@ -63,7 +63,8 @@ void MissionCore::onStateEstimate(const StateEstimate& estimate, Outbox& out) {
   if (throw_observer_) throw_observer_(*detection);
 }
 
-void MissionCore::onClock(int64_t utime, Outbox& out) {
+void MissionCore::onClock(const SimClockTick& clock, Outbox& out) {
+  const int64_t utime = clock.utime;
   if (utime <= now_utime_) return;
   now_utime_ = utime;
   health_.setSimTime(utime);

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 
+#include "sdlqr/math/in_flight.hpp"
 #include "sdlqr/math/vehicle.hpp"
 
 namespace sdlqr::mission {
@@ -76,43 +77,38 @@ Disturbance parseDisturbance(const ConfigReader& d) {
   return out;
 }
 
+// "q_diag and r_diag", "omega_max, c_min and c_max": the keys of one PARAMS group.
+std::string groupKeys(int32_t group) {
+  std::vector<std::string> keys;
+  for (const InFlightParam& param : inFlightParams()) {
+    if (param.info.in_flight == group) keys.push_back(param.info.key);
+  }
+  std::string text;
+  for (size_t i = 0; i < keys.size(); ++i) text += (i == 0 ? "" : i + 1 == keys.size() ? " and " : ", ") + keys[i];
+  return text;
+}
+
+// The keys declared in flight (sdlqr/math/in_flight.hpp), a group's keys all or none, each read
+// as its declaration reads it; the values then pass the one check of every PARAMS update.
 ParamsUpdate parseParams(const ConfigReader& p) {
-  p.allowOnly({"q_diag", "r_diag", "omega_max", "c_min", "c_max", "mass", "tracking"});
+  std::vector<std::string> allowed;
+  for (const InFlightParam& param : inFlightParams()) allowed.push_back(param.info.key);
+  p.allowOnly(allowed);
   ParamsUpdate out;
-  if (p.has("q_diag") || p.has("r_diag")) {
-    if (!p.has("q_diag") || !p.has("r_diag")) throw ConfigError(p.path(), "q_diag and r_diag go together");
-    out.field_mask |= ParamsUpdate::kWeights;
-    p.read("q_diag", out.q_diag);
-    p.read("r_diag", out.r_diag);
-  }
-  if (p.has("omega_max") || p.has("c_min") || p.has("c_max")) {
-    if (!p.has("omega_max") || !p.has("c_min") || !p.has("c_max")) {
-      throw ConfigError(p.path(), "omega_max, c_min and c_max go together");
+  for (const InFlightParam& param : inFlightParams()) {
+    if (!p.has(param.info.key)) continue;
+    for (const InFlightParam& other : inFlightParams()) {
+      if (other.info.in_flight == param.info.in_flight && !p.has(other.info.key)) {
+        throw ConfigError(p.path(), groupKeys(param.info.in_flight) + " go together");
+      }
     }
-    out.field_mask |= ParamsUpdate::kLimits;
-    p.read("omega_max", out.omega_max);
-    p.read("c_min", out.c_min);
-    p.read("c_max", out.c_max);
-  }
-  if (p.has("mass")) {
-    out.field_mask |= ParamsUpdate::kMass;
-    p.read("mass", out.mass);
-    // The range of vehicle.mass; whether the rotors lift it is the bodyrate loop's check.
-    if (!kMassRange.contains(out.mass)) throw ConfigError(p.keyPath("mass"), kMassRange.rule("kg"));
-  }
-  if (p.has("tracking")) {
-    std::string tracking;
-    p.read("tracking", tracking);
-    if (tracking == "spatial") {
-      out.tracking = ReferenceMode::kSpatial;
-    } else if (tracking == "temporal") {
-      out.tracking = ReferenceMode::kTemporal;
-    } else {
-      throw ConfigError(p.keyPath("tracking"), "expected spatial or temporal");
-    }
-    out.field_mask |= ParamsUpdate::kTracking;
+    out.field_mask |= param.info.in_flight;
+    setInFlightValues(out, param.info.key, param.read(p, param.info.key));
   }
   if (out.field_mask == 0) throw ConfigError(p.path(), "sets nothing");
+  // Whether the rotors lift a mass is the bodyrate loop's check.
+  const InFlightCheck check = checkInFlight(out);
+  if (!check.ok()) throw ConfigError(p.keyPath(check.key), check.reason);
   return out;
 }
 

@@ -35,10 +35,10 @@ EmulatorCore::EmulatorCore(const EmulatorConfig& config, const sim::SimStress& s
     : config_(config),
       link_(link),
       airframe_(airframeOf(config)),
-      inner_(InnerWiring{this}),
       sim_(config.vehicle, checked(config), stress),
       estimator_(config.estimator),
       lowlevel_(config.vehicle, config.lowlevel, config.lqr.gravity, config.faults, config.validation),
+      inner_(observer_, lowlevel_, estimator_, sim_),
       commander_(config.emulator) {
   Counters& c = health_.counters();
   ids_.offboard_entered = c.add("px4emu.offboard.entered");
@@ -70,7 +70,7 @@ bool EmulatorCore::step(Outbox& bus) {
   bus_ = &bus;
   const double now_s = 1e-6 * static_cast<double>(utime());
   lowlevel_.onWallTime(now_s);  // simulation time is this vehicle's only clock
-  const bool crashed = sim_.step(inner_);
+  const bool crashed = sim_.step(inner_.outboxOf<sim::SimCore>());
   const lowlevel::BodyrateLoop& loop = lowlevel_.loop();
   land_detector_.update(loop.mode() == MotorMode::kDisarmed || loop.mode() == MotorMode::kIdle || loop.status().maybe_landed,
                         sim_.simulator().period());
@@ -91,21 +91,6 @@ bool EmulatorCore::step(Outbox& bus) {
 }
 
 RejectReason EmulatorCore::onDisturbance(const Disturbance& disturbance) { return sim_.onDisturbance(disturbance); }
-
-// ---- inside the vehicle
-
-void EmulatorCore::route(const ImuSample& m) {
-  imu_ = m;
-  lowlevel_.onImu(m, inner_);  // the bodyrate loop acts on the sample first, as on the bus
-  estimator_.onImu(m, inner_);
-}
-void EmulatorCore::route(const VioPose& m) { estimator_.onVio(m); }
-void EmulatorCore::route(const SimTruth& m) { bus_->publish(m); }
-void EmulatorCore::route(const StateEstimate& m) { estimate_ = m; }
-void EmulatorCore::route(const MotorCommand& m) {
-  sim_.onMotorCommand(m);
-  bus_->publish(m);
-}
 
 uint8_t EmulatorCore::landedState() const {
   if (onGround()) return mavlink::mav_landed_state::kOnGround;

@@ -8,6 +8,11 @@ AirborneStart::AirborneStart() { declaration().setDefaults(*this); }
 ThrowEvent::ThrowEvent() { declaration().setDefaults(*this); }
 SimStress::SimStress() { declaration().setDefaults(*this); }
 
+SimStress SimStress::loadFromScenario(const std::string& scenario_path) {
+  const YAML::Node root = loadYamlFile(scenario_path);
+  return load(ConfigReader(root, "").child("sim"));
+}
+
 bool PlantOverride::changesNothing() const {
   return mass_scale == 1.0 && inertia_scale == Vec3::Ones() && thrust_scale == 1.0 &&
          motor_time_constant_scale == 1.0 && body_drag == 0.0;

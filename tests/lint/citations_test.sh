@@ -10,6 +10,8 @@ rm -rf "$work" && mkdir -p "$work" && cd "$work" && git init -q . || exit 2
 for bad in '// as in DESIGN §3' '// see MISSING.md'; do
   echo "$bad" > bad.cpp
   git add bad.cpp
-  if bash "$here/citations.sh" "$work" >/dev/null; then echo "FAIL: not caught: $bad"; exit 1; fi
+  out="$(bash "$here/citations.sh" "$work")"
+  status=$?
+  [ "$status" -eq 1 ] && grep -q "cites" <<<"$out" || { echo "FAIL: not caught (exit $status): $bad"; exit 1; }
 done
 echo "PASS"

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "sdlqr/config/cli.hpp"
+#include "sdlqr/faults/kernel_loss.hpp"
 #include "sdlqr/faults/liveness.hpp"
 #include "sdlqr/faults/outage_check.hpp"
 #include "sdlqr/logger/flight_log.hpp"
@@ -132,6 +133,10 @@ int main(int argc, char** argv) {
     parser.addOption("--max-hover-error", &max_hover_error, "M", "default 0.1 m");
     parser.addFlag("--complete", &require_complete, "fail unless the log ends in a whole event");
     parser.addOption("--vehicle", &vehicle, "PREFIX", "channel prefix of the vehicle");
+    long long kernel_dropped = -1;
+    parser.addOption("--kernel-drops", &kernel_dropped, "N",
+                     "the datagrams a loss rule dropped in the kernel (scripts/packet_loss --dropped): must be > 0,\n"
+                     "match the log's gaps, and every subscriber must have counted them (kernel_loss.hpp)");
     std::string gains_outage, estimator_outage, controller_outage, setpoint_text;
     double fallback_timeout = 1.0, max_gains_resume = 0.25;
     double max_failsafe_delay = 0.2, max_tilt = 30.0, max_touchdown_speed = 1.0;
@@ -227,11 +232,13 @@ int main(int argc, char** argv) {
         ++samples;
       }
       const double rms = samples > 0 ? std::sqrt(sum_sq / static_cast<double>(samples)) : 0.0;
-      std::cout << "hover error over t=[" << v[0] << ", " << v[1] << "] s (" << samples << " truth samples): max "
-                << worst << " m, RMS " << rms << " m (limit " << max_hover_error << " m)"
+      const bool hover_ok = samples > 0 && worst < max_hover_error && !crashed;
+      std::cout << verdict(hover_ok) << " hover error over t=[" << v[0] << ", " << v[1] << "] s (" << samples
+                << " truth samples): max " << worst << " m, RMS " << rms << " m (limit " << max_hover_error << " m)"
                 << (crashed ? ", CRASHED" : "") << "\n";
-      ok = ok && samples > 0 && worst < max_hover_error && !crashed;
+      ok = ok && hover_ok;
     }
+    if (kernel_dropped >= 0) ok = report(faults::judgeKernelLoss(log, alive, kernel_dropped)) && ok;
     for (const std::string& name : splitList(required_text)) {
       const int64_t total = totals.count(name) ? totals[name] : 0;
       std::cout << (total > 0 ? "ok   " : "FAIL ") << name << " = " << total << " over all processes\n";

@@ -6,8 +6,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <set>
+#include <utility>
+#include <vector>
 
 #include "sdlqr/messages/channels.hpp"
 #include "sdlqr/config/cli.hpp"
@@ -56,24 +59,45 @@ int waitForHeartbeats(bus::Node& bus, const std::string& names, double timeout_s
   return 1;
 }
 
-// --until-sim-time: returns once a SIM_TRUTH of this vehicle at or past `sim_s` has been heard
-// (injected faults are timed on simulation time), or says how far the clock got on timeout. Raw:
-// a signed bus's trailer is ignored by the decode, so no key is needed to read the clock.
-int waitForSimTime(bus::Node& bus, double sim_s, double timeout_s) {
-  const int64_t target = static_cast<int64_t>(sim_s * 1e6 + 0.5);
-  int64_t newest = -1;
-  bus.subscribeRaw(bus.channel(channel::kSimTruth), [&](const std::string&, const void* data, uint32_t size, int64_t) {
-    sim_truth_t truth;
-    if (truth.decode(data, 0, static_cast<int>(size)) >= 0) newest = std::max(newest, truth.utime);
-  }, 16);
+// --at-sim-time: prints "sim time S" (S as given) as soon as the simulation clock (SIM_CLOCK or
+// SIM_TRUTH of this vehicle) reaches each mark, then exits 0; 1 when the clock has not reached them
+// after timeout_s of wall time. A test injects its faults at these lines, on the flight's own time:
+// a machine that stalls for seconds stalls the simulation with it, so a fault never lands late.
+int printSimTimeMarks(bus::Node& bus, const std::string& list, double timeout_s) {
+  std::vector<std::pair<double, std::string>> marks;  // seconds, as written
+  for (size_t start = 0; start < list.size();) {
+    const size_t comma = std::min(list.find(',', start), list.size());
+    const std::string text = list.substr(start, comma - start);
+    size_t used = 0;
+    double mark = std::nan("");
+    try {
+      mark = std::stod(text, &used);
+    } catch (const std::exception&) {
+    }
+    if (used != text.size() || !(mark >= 0.0) || (!marks.empty() && mark <= marks.back().first)) {
+      throw std::invalid_argument("--at-sim-time: expected increasing seconds separated by commas, got '" + list + "'");
+    }
+    marks.emplace_back(mark, text);
+    start = comma + 1;
+  }
+  if (marks.empty()) throw std::invalid_argument("--at-sim-time: expected seconds separated by commas");
+  size_t next = 0;
+  const auto reached = [&](int64_t sim_us) {
+    for (; next < marks.size() && static_cast<double>(sim_us) >= marks[next].first * 1e6; ++next) {
+      std::cout << "sim time " << marks[next].second << std::endl;
+    }
+  };
+  bus.subscribe<sim_clock_t>(channel::kSimClock, [&](const sim_clock_t& clock) { reached(clock.utime); }, 16);
+  // The simulator's truth carries the same time: on an emulated autopilot's host (sdlqr-px4-emulator)
+  // it is the clock heard there, the vehicle's SIM_CLOCK coming from the bridge across the link.
+  bus.subscribe<sim_truth_t>(channel::kSimTruth, [&](const sim_truth_t& truth) { reached(truth.utime); }, 16);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-  while (newest < target && bus.spin(5)) {
-    if (std::chrono::steady_clock::now() > deadline) break;
+  while (next < marks.size() && bus.spin(20) && std::chrono::steady_clock::now() <= deadline) {
   }
   bus.shutdown();
-  if (newest >= target) return 0;
-  std::cerr << "sdlqr-top: simulation time " << sim_s << " s not reached within " << timeout_s << " s (newest SIM_TRUTH "
-            << 1e-6 * static_cast<double>(newest) << " s)\n";
+  if (next == marks.size()) return 0;
+  std::cerr << "sdlqr-top: the simulation clock on " << bus.channel(channel::kSimClock) << " did not reach "
+            << marks[next].second << " s within " << timeout_s << " s\n";
   return 1;
 }
 
@@ -85,9 +109,8 @@ int main(int argc, char** argv) {
     double duration_s = 0.0;
     double period_s = 1.0;
     bool plain = false;
-    std::string wait_for;
-    double wait_timeout_s = 10.0;
-    double until_sim_s = -1.0;
+    std::string wait_for, sim_time_marks;
+    double wait_timeout_s = -1.0;
     ArgParser parser("sdlqr-top",
                      "Terminal view of the bus: once a second each channel's rate, the age of its newest\n"
                      "message and its size, and each process's HEARTBEAT (state, CPU, received, published,\n"
@@ -100,24 +123,30 @@ int main(int argc, char** argv) {
     parser.addOption("--wait-for", &wait_for, "P1,P2,...",
                      "only wait until each named process (e.g. sdlqr-estimator) has sent a HEARTBEAT on this\n"
                      "vehicle's channel, then exit 0 (1 after --timeout)");
-    parser.addOption("--until-sim-time", &until_sim_s, "T",
-                     "only wait until a SIM_TRUTH at or past simulation time T s is heard, then exit 0 (1 after\n"
-                     "--timeout): what times an injected fault (scripts/deploy --kill-at, --link-down-at)");
-    parser.addOption("--timeout", &wait_timeout_s, "S", "for --wait-for and --until-sim-time, default 10 s of wall time");
-    parser.setEpilog("exit codes: 0 stopped by SIGINT/SIGTERM or --duration, 2 bad option");
+    parser.addOption("--at-sim-time", &sim_time_marks, "S1,S2,...",
+                     "only print 'sim time S' as the simulation clock (SIM_CLOCK, SIM_TRUTH) reaches each S seconds,\n"
+                     "then exit 0 (1 after --timeout): fault injections timed on the flight's own clock");
+    parser.addOption("--timeout", &wait_timeout_s, "S",
+                     "wall seconds for --wait-for (default 10) or --at-sim-time (default 120)");
+    parser.setEpilog(
+        "exit codes: 0 stopped by SIGINT/SIGTERM or --duration, or the wait is over; 1 --wait-for or --at-sim-time\n"
+        "timed out; 2 bad option");
     parser.parseOrExit(argc, argv);
     if (!(duration_s >= 0.0)) throw std::invalid_argument("--duration: must be >= 0, got " + std::to_string(duration_s));
     if (!(period_s >= 0.1)) throw std::invalid_argument("--period: must be >= 0.1 s, got " + std::to_string(period_s));
     const bool clear = !plain && ::isatty(STDOUT_FILENO);
-    if (until_sim_s >= 0.0) {
-      if (!(wait_timeout_s > 0.0)) throw std::invalid_argument("--timeout: must be > 0");
-      bus::Node bus("sdlqr-top", options);
-      return waitForSimTime(bus, until_sim_s, wait_timeout_s);
+    if (wait_timeout_s < 0.0) wait_timeout_s = sim_time_marks.empty() ? 10.0 : 120.0;
+    if (!(wait_timeout_s > 0.0)) throw std::invalid_argument("--timeout: must be > 0");
+    if (!wait_for.empty() && !sim_time_marks.empty()) {
+      throw std::invalid_argument("--wait-for and --at-sim-time: one at a time");
     }
     if (!wait_for.empty()) {
-      if (!(wait_timeout_s > 0.0)) throw std::invalid_argument("--timeout: must be > 0");
       bus::Node bus("sdlqr-top", options);
       return waitForHeartbeats(bus, wait_for, wait_timeout_s);
+    }
+    if (!sim_time_marks.empty()) {
+      bus::Node bus("sdlqr-top", options);
+      return printSimTimeMarks(bus, sim_time_marks, wait_timeout_s);
     }
 
     inspect::BusMonitor monitor;

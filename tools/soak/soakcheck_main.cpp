@@ -3,7 +3,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "sdlqr/soak/soak_check.hpp"
 #include "sdlqr/soak/soak_log.hpp"
@@ -19,6 +21,7 @@ void usage(std::FILE* to) {
                "  --log LOG       the flight log\n"
                "  --airborne S    simulation seconds the vehicle must have been airborne\n"
                "  --window S      window length (default 60); the first window is the reference\n"
+               "  --expect A,B    processes that must have samples in every window (the launcher's)\n"
                "Exit 0 when every check holds, 1 when one fails, 2 on bad arguments or input.\n");
 }
 
@@ -32,10 +35,20 @@ double number(const std::string& key, const char* text) {
   return v;
 }
 
+std::vector<std::string> names(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  for (std::string name; std::getline(in, name, ',');) {
+    if (!name.empty()) out.push_back(name);
+  }
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::string samples_path, log_path;
+  std::vector<std::string> expected;
   double airborne = -1.0;
   soak::GrowthLimits limits;
   for (int i = 1; i < argc; ++i) {
@@ -53,6 +66,7 @@ int main(int argc, char** argv) {
     else if (arg == "--log") log_path = value;
     else if (arg == "--airborne") airborne = number(arg, value);
     else if (arg == "--window") limits.window_s = number(arg, value);
+    else if (arg == "--expect") expected = names(value);
     else {
       std::fprintf(stderr, "sdlqr-soakcheck: unknown option '%s' (see --help)\n", arg.c_str());
       return 2;
@@ -70,7 +84,7 @@ int main(int argc, char** argv) {
                 static_cast<long long>(whole.seq_lost), whole.worst_channel.empty() ? "" : ", most on ",
                 whole.worst_channel.c_str(), whole.airborne_sim_s, airborne, whole.crashed ? ", CRASHED" : "");
     const soak::SoakReport report = soak::judgeGrowth(soak::readSamples(samples_path), soak::commandLatencyOverTime(log),
-                                                      whole.airborne_start, whole.airborne_end, limits);
+                                                      whole.airborne_start, whole.airborne_end, limits, expected);
     std::printf("%-8s %-22s %10s %5s %8s   (latency median STATE_EST->RATE_CMD)\n", "window", "process", "rss_kib",
                 "fds", "cpu_%");
     for (size_t i = 0; i < report.windows.size(); ++i) {

@@ -75,10 +75,13 @@ std::string channelUrl(BusLayout layout, const std::string& base_url, std::strin
 std::vector<std::string> layoutUrls(BusLayout layout, const std::string& base_url) {
   std::vector<std::string> urls{urlWithPortOffset(base_url, 0)};
   if (layout == BusLayout::kSingle) return urls;
-  for (const auto& entry : channel::kSplitPorts) {
-    const std::string url = urlWithPortOffset(base_url, entry.port_offset);
-    if (std::find(urls.begin(), urls.end(), url) == urls.end()) urls.push_back(url);
+  std::vector<int> offsets;  // of the channels' @split_port, lowest first
+  for (const ChannelInfo& entry : kChannels) {
+    if (entry.split_port > 0) offsets.push_back(entry.split_port);
   }
+  std::sort(offsets.begin(), offsets.end());
+  offsets.erase(std::unique(offsets.begin(), offsets.end()), offsets.end());
+  for (int offset : offsets) urls.push_back(urlWithPortOffset(base_url, offset));
   return urls;
 }
 

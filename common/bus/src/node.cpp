@@ -120,11 +120,7 @@ Node::Node(std::string process, const ProcessOptions& options, ProcessHealth& he
     setFaultInjection(FaultInjection::parse(spec));
   }
   if (const std::optional<BusKey> key = busKeyFromEnvironment()) setBusKey(*key);
-  struct sigaction action {};
-  action.sa_handler = onStopSignal;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
+  installStopSignalHandlers();
   encode_buffer_.resize(4096 + kSignatureSize);
   next_heartbeat_ = std::chrono::steady_clock::now();
   cpu_window_start_ = next_heartbeat_;
@@ -495,6 +491,11 @@ void Node::noteSequence(SubscriptionBase& sub, int64_t seq) {
 }
 
 void Node::publishRaw(lcm::LCM& lcm, const std::string& channel, const void* data, int size) {
+  if (listen_only_) {
+    countError();
+    setLastError("listen-only: refused to publish on " + channel);
+    return;
+  }
   if (lcm.publish(channel, data, static_cast<unsigned int>(size)) != 0) {
     countError();
     setLastError("publish failed on " + channel);
@@ -503,7 +504,17 @@ void Node::publishRaw(lcm::LCM& lcm, const std::string& channel, const void* dat
   ++published_;
 }
 
-bool Node::running() const { return !g_stop_requested.load(); }
+bool Node::running() const { return !stopRequested(); }
+
+void installStopSignalHandlers() {
+  struct sigaction action {};
+  action.sa_handler = onStopSignal;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+}
+
+bool stopRequested() { return g_stop_requested.load(); }
 
 bool Node::spin(int timeout_ms) {
   if (!running()) return false;
@@ -513,7 +524,7 @@ bool Node::spin(int timeout_ms) {
     setLastError("LCM handle failed");
   }
   deliverDueMessages();
-  if (std::chrono::steady_clock::now() >= next_heartbeat_) publishHeartbeat();
+  if (!listen_only_ && std::chrono::steady_clock::now() >= next_heartbeat_) publishHeartbeat();
   return running();
 }
 
@@ -564,6 +575,7 @@ void Node::shutdown() {
 }
 
 void Node::publishHeartbeat() {
+  if (listen_only_) return;
   const auto now = std::chrono::steady_clock::now();
   next_heartbeat_ = now + std::chrono::seconds(1);
   const double window = std::chrono::duration<double>(now - cpu_window_start_).count();

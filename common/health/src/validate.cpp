@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "sdlqr/math/lqr_params.hpp"
+#include "sdlqr/math/in_flight.hpp"
 #include "sdlqr/math/vehicle.hpp"
 
 namespace sdlqr {
@@ -124,35 +125,23 @@ RejectReason validate(const Command& m, const ValidationLimits& limits) {
   return RejectReason::kNone;
 }
 
+// The values against their declarations (checkInFlight: groups, choices, finite, ranges, rules),
+// then the message limits of the validation section. The vehicle's own check (liftable) is the
+// bodyrate loop's.
 RejectReason validate(const ParamsUpdate& m, const ValidationLimits& limits) {
-  if (m.field_mask & ~(ParamsUpdate::kWeights | ParamsUpdate::kLimits | ParamsUpdate::kMass | ParamsUpdate::kTracking |
-                       ParamsUpdate::kLaw)) {
-    return RejectReason::kBadEnum;
+  switch (checkInFlight(m).verdict) {
+    case InFlightVerdict::kOk: break;
+    case InFlightVerdict::kUnknownGroup:
+    case InFlightVerdict::kBadChoice: return RejectReason::kBadEnum;
+    case InFlightVerdict::kNonFinite: return RejectReason::kNonFinite;
+    case InFlightVerdict::kOutOfRange: return RejectReason::kOutOfRange;
   }
-  if ((m.field_mask & ParamsUpdate::kLaw) && !isControlLaw(m.law)) return RejectReason::kBadEnum;
-  if ((m.field_mask & ParamsUpdate::kWeights) && (!finite(m.q_diag) || !finite(m.r_diag))) {
-    return RejectReason::kNonFinite;
-  }
-  if ((m.field_mask & ParamsUpdate::kLimits) &&
-      (!std::isfinite(m.omega_max) || !std::isfinite(m.c_min) || !std::isfinite(m.c_max))) {
-    return RejectReason::kNonFinite;
-  }
-  if ((m.field_mask & ParamsUpdate::kMass) && !std::isfinite(m.mass)) return RejectReason::kNonFinite;
   if ((m.field_mask & ParamsUpdate::kWeights) &&
-      (m.q_diag.minCoeff() < 0.0 || m.r_diag.minCoeff() <= 0.0 || m.q_diag.maxCoeff() > limits.max_weight ||
-       m.r_diag.maxCoeff() > limits.max_weight)) {
+      (m.q_diag.maxCoeff() > limits.max_weight || m.r_diag.maxCoeff() > limits.max_weight)) {
     return RejectReason::kOutOfRange;
   }
-  if ((m.field_mask & ParamsUpdate::kLimits) &&
-      !(m.omega_max > 0.0 && m.omega_max <= limits.max_body_rate && m.c_min >= 0.0 && m.c_max > m.c_min &&
-        m.c_max <= limits.max_thrust)) {
+  if ((m.field_mask & ParamsUpdate::kLimits) && !(m.omega_max <= limits.max_body_rate && m.c_max <= limits.max_thrust)) {
     return RejectReason::kOutOfRange;
-  }
-  // The vehicle's own check (liftable) is the bodyrate loop's; the range is vehicle.mass's.
-  if ((m.field_mask & ParamsUpdate::kMass) && !kMassRange.contains(m.mass)) return RejectReason::kOutOfRange;
-  if ((m.field_mask & ParamsUpdate::kTracking) && m.tracking != ReferenceMode::kSpatial &&
-      m.tracking != ReferenceMode::kTemporal) {
-    return RejectReason::kBadEnum;
   }
   return RejectReason::kNone;
 }

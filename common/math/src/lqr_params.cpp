@@ -4,7 +4,7 @@
 #include <utility>
 #include <vector>
 
-#include "sdlqr/math/vehicle.hpp"
+#include "sdlqr/math/in_flight.hpp"
 
 namespace sdlqr {
 
@@ -73,14 +73,17 @@ const ParamTable<LqrParams>& LqrParams::declaration() {
     using P = LqrParams;
     ParamTable<P> t("weights and limits of the state-dependent LQR (paper §III-B)");
     t.list("q_diag", &P::q_diag, {100, 100, 100, 1, 1, 1, 1, 10, 10, 10}, "-", Range::atLeast(0.0),
-           "state cost: p (m), q (-), v (m/s); >= 0 keeps Q positive semidefinite");
+           "state cost: p (m), q (-), v (m/s); >= 0 keeps Q positive semidefinite")
+        .inFlight(ParamsUpdate::kWeights);
     t.list("r_diag", &P::r_diag, {1, 5, 5, 0.1}, "-", Range::above(0.0),
-           "input cost: omega x, y, z (rad/s), thrust (m/s^2); > 0 keeps R positive definite");
+           "input cost: omega x, y, z (rad/s), thrust (m/s^2); > 0 keeps R positive definite")
+        .inFlight(ParamsUpdate::kWeights);
     t.number("dt", &P::dt, 0.01, "s", Range::openClosed(0.0, 1.0), "LQR discretization step = control period (100 Hz)");
     t.number("omega_max", &P::omega_max, 2.0, "rad/s", Range::above(0.0),
-             "||omega_des|| limit (at most validation.max_body_rate)");
-    t.number("c_min", &P::c_min, 2.0, "m/s^2", Range::atLeast(0.0), "thrust lower limit");
-    t.number("c_max", &P::c_max, 18.0, "m/s^2", Range::finite(), "thrust upper limit");
+             "||omega_des|| limit (at most validation.max_body_rate)")
+        .inFlight(ParamsUpdate::kLimits);
+    t.number("c_min", &P::c_min, 2.0, "m/s^2", Range::atLeast(0.0), "thrust lower limit").inFlight(ParamsUpdate::kLimits);
+    t.number("c_max", &P::c_max, 18.0, "m/s^2", Range::finite(), "thrust upper limit").inFlight(ParamsUpdate::kLimits);
     t.number("gravity", &P::gravity, kDefaultGravity, "m/s^2", Range::above(0.0), "gravity of the model");
     t.choice("method", &P::method, LqrMethod::kTangent,
              {{toString(LqrMethod::kTangent), LqrMethod::kTangent}, {toString(LqrMethod::kIterative), LqrMethod::kIterative}},
@@ -92,7 +95,8 @@ const ParamTable<LqrParams>& LqrParams::declaration() {
     for (ControlLaw law : kLaws) laws.emplace_back(toString(law), law);
     t.choice("law", &P::law, ControlLaw::kSdlqr, laws,
              "controller: sdlqr (paper), hover_lqr (K solved once at hover), geometric (cascaded SE(3)), "
-             "sdlqr_integral (ext. I), sdlqr_actuator (ext. II); PARAMS law switches it in flight");
+             "sdlqr_integral (ext. I), sdlqr_actuator (ext. II); PARAMS law switches it in flight")
+        .inFlight(ParamsUpdate::kLaw);
     // > 0: an integrator the cost does not see has no stabilizing Riccati solution.
     t.list("q_integral", &P::q_integral, {4, 4, 4}, "-", Range::above(0.0),
            "sdlqr_integral: cost on the integral of p - p_ref (m s)");
@@ -118,27 +122,10 @@ const char* toString(ParamsOutcome outcome) {
 
 ParamsOutcome RuntimeLqrParams::apply(const ParamsUpdate& update) {
   if (update.utime < utime_ || (update.utime == utime_ && update.seq <= seq_)) return ParamsOutcome::kNotNewer;
-  constexpr int32_t kKnown = ParamsUpdate::kWeights | ParamsUpdate::kLimits | ParamsUpdate::kMass |
-                             ParamsUpdate::kTracking | ParamsUpdate::kLaw;
-  if ((update.field_mask & ~kKnown) != 0) return ParamsOutcome::kInvalid;
   // The update is one change: a bad part the others' owners would refuse refuses it all here too.
-  if ((update.field_mask & ParamsUpdate::kMass) && !kMassRange.contains(update.mass)) return ParamsOutcome::kInvalid;
-  if ((update.field_mask & ParamsUpdate::kTracking) && update.tracking != ReferenceMode::kSpatial &&
-      update.tracking != ReferenceMode::kTemporal) {
-    return ParamsOutcome::kInvalid;
-  }
-  if ((update.field_mask & ParamsUpdate::kLaw) && !isControlLaw(update.law)) return ParamsOutcome::kInvalid;
+  if (!checkInFlight(update).ok()) return ParamsOutcome::kInvalid;
   LqrParams next = params_;
-  if (update.field_mask & ParamsUpdate::kLaw) next.law = update.law;
-  if (update.field_mask & ParamsUpdate::kWeights) {
-    next.q_diag = update.q_diag;
-    next.r_diag = update.r_diag;
-  }
-  if (update.field_mask & ParamsUpdate::kLimits) {
-    next.omega_max = update.omega_max;
-    next.c_min = update.c_min;
-    next.c_max = update.c_max;
-  }
+  applyInFlight(LqrParams::declaration(), next, update);
   if (!next.valid()) return ParamsOutcome::kInvalid;
   params_ = next;
   utime_ = update.utime;

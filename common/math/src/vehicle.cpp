@@ -30,7 +30,8 @@ Mat44 VehicleParams::effectiveness() const {
 VehicleParams::VehicleParams() { declaration().setDefaults(*this); }
 
 std::string VehicleParams::massInvalidReason(double candidate_mass, double gravity) const {
-  if (!kMassRange.contains(candidate_mass)) return kMassRange.rule("kg");
+  const Range& range = declaration().info("mass").range;
+  if (!range.contains(candidate_mass)) return range.rule("kg");
   if (!(4.0 * max_rotor_thrust > candidate_mass * gravity)) return "the rotors cannot lift it";
   return {};
 }
@@ -51,7 +52,7 @@ const ParamTable<VehicleParams>& VehicleParams::declaration() {
   static const ParamTable<VehicleParams> table = [] {
     using P = VehicleParams;
     ParamTable<P> t("airframe, shared by the simulator (the plant) and the bodyrate loop (its model)");
-    t.number("mass", &P::mass, 0.255, "kg", kMassRange, "take-off weight");
+    t.number("mass", &P::mass, 0.255, "kg", Range::open(0.0, 100.0), "take-off weight").inFlight(ParamsUpdate::kMass);
     t.list("inertia_diag", &P::inertia_diag, {9.0e-4, 9.0e-4, 1.6e-3}, "kg m^2", Range::above(0.0),
            "principal moments about body x, y, z");
     t.number("arm_length", &P::arm_length, 0.125, "m", Range::above(0.0), "centre to rotor axis: 250 mm diagonal / 2");

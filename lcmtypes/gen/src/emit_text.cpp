@@ -73,6 +73,9 @@ std::vector<GeneratedHeader> emitAll(const std::vector<LcmStruct>& types, const 
       {"lcm_fields.hpp", emitLcmFieldsHeader(types, source_note)},
       {"wire_fits.hpp", emitWireFitsHeader(types, source_note)},
       {"convert.hpp", emitConvertHeader(model, source_note)},
+      {"channels.hpp", emitChannelsHeader(model, source_note)},
+      {"outbox.hpp", emitOutboxHeader(model, source_note)},
+      {"json_schemas.hpp", emitJsonSchemasHeader(types, source_note)},
   };
 }
 

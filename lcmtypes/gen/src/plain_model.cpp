@@ -1,7 +1,9 @@
 #include "sdlqr/lcmgen/plain_model.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <map>
+#include <sstream>
 
 namespace sdlqr::lcmgen {
 
@@ -109,6 +111,7 @@ class Builder {
     if (plain == s.annotations.end() || plain->second.empty()) fail(s, 1, "struct " + s.name + " needs @plain <Name> in its comment");
     out.name = plain->second;
     for (auto [it, end] = s.annotations.equal_range("method"); it != end; ++it) out.methods.push_back(it->second);
+    out.channel = channelOf(s);
 
     std::map<std::string, std::vector<const LcmField*>> sized_by;  // length field -> arrays
     for (const LcmField& f : s.fields) {
@@ -126,6 +129,36 @@ class Builder {
       } else if (!f.hasVariableDimension() || !inRowGroup(s, f)) {
         out.members.push_back(member(s, f));
       }
+    }
+    return out;
+  }
+
+  // `@channel STATE_EST [StateEstimate]`: the identifier defaults to the type's name without _t.
+  static PlainChannel channelOf(const LcmStruct& s) {
+    PlainChannel out;
+    const auto channel = s.annotations.find("channel");
+    if (channel == s.annotations.end()) {
+      if (s.annotations.count("split_port")) fail(s, 1, "@split_port without @channel");
+      return out;
+    }
+    std::istringstream words(channel->second);
+    words >> out.name >> out.id;
+    const bool upper_snake = !out.name.empty() && std::all_of(out.name.begin(), out.name.end(), [](char c) {
+      return std::isupper(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_';
+    });
+    if (!upper_snake) fail(s, 1, "@channel needs an UPPER_SNAKE name, got '" + channel->second + "'");
+    if (out.id.empty()) {
+      std::string stem = s.name.size() > 2 && s.name.compare(s.name.size() - 2, 2, "_t") == 0
+                             ? s.name.substr(0, s.name.size() - 2) : s.name;
+      for (char& c : stem) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      out.id = constantName(stem).substr(1);
+    }
+    const auto port = s.annotations.find("split_port");
+    if (port != s.annotations.end()) {
+      const std::string& text = port->second;
+      const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); });
+      if (!digits || text.size() > 3 || std::stoi(text) < 1) fail(s, 1, "@split_port needs a port offset from 1 to 999, got '" + text + "'");
+      out.split_port = std::stoi(text);
     }
     return out;
   }

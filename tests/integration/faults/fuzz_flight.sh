@@ -8,21 +8,26 @@
 set -uo pipefail
 build="$1" work="$2" scenario="$3"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
+source "$root/tests/support/sim_time.sh"
 rm -rf "$work"
 mkdir -p "$work"
 log="$work/flight.lcmlog"
+# The attack starts at 5 s of simulation time, airborne and settled at 1 m (tests/support/sim_time.sh).
+sim_time_marks "$build" 5
 "$root/scripts/launch" --build "$build" --log "$log" "$scenario" > "$work/launch.out" 2>&1 &
 launcher=$!
-sleep 7  # airborne and settled at 1 m
-"$build/bin/sdlqr-fuzz-publisher" --duration 10 --rate 1000 --seed 5 > "$work/fuzz.out" 2>&1
-fuzz_status=$?
+fuzz_status=1
+if wait_sim_time 5; then
+  "$build/bin/sdlqr-fuzz-publisher" --duration 10 --rate 1000 --seed 5 > "$work/fuzz.out" 2>&1
+  fuzz_status=$?
+fi
 wait "$launcher"
 launch_status=$?
 grep -E '^launch:.*(ended|crash|killed)' "$work/launch.out"
 cat "$work/fuzz.out"
 echo "fuzz_flight: fuzz publisher exit $fuzz_status, launcher exit $launch_status"
 # The fuzzed channels are in the log too: hover error from SIM_TRUTH (not fuzzed) over the fuzz
-# window and 3 s after it (the stack starts ~0.5 s before simulation time 0).
+# window (from 5 s of simulation time, 10 s) and 5 s after it.
 # Every process of the stack table must beat to the end of the log (the fuzzer may stop early).
 expected=$(sed -n 's/^\([a-z]\+\) .*/sdlqr-\1/p' "$root/config/stack.procs" | paste -sd, -)
 "$build/bin/sdlqr-faultcheck" "$log" --expect "$expected" --hover 5,20,0,0,1 --max-hover-error 0.1 \

@@ -2,14 +2,16 @@
 # kill -9 one flight process mid-hover, restart it after a while, and measure from the log what the
 # rest of the stack did meanwhile (sdlqr-faultcheck --NAME-outage). The launcher starts the stack
 # without NAME (--without); this script runs NAME itself so it can kill and restart it.
-#   process_outage.sh BUILD_DIR WORK_DIR SCENARIO NAME KILL_AFTER_S DOWN_FOR_S [faultcheck options...]
-# NAME: gains, estimator or controller. KILL_AFTER_S: wall seconds after the simulator started (the
-# launcher's "scenario" line), not after the launch: the bus calibration and the start-up before
-# it took 2 s on one machine and over 5 s on another, where the kill landed before the take-off.
+#   process_outage.sh BUILD_DIR WORK_DIR SCENARIO NAME KILL_AT_S DOWN_FOR_S [faultcheck options...]
+# NAME: gains, estimator or controller. KILL_AT_S: simulation time of the kill; the restart follows
+# DOWN_FOR_S seconds of simulation time later (tests/support/sim_time.sh): wall seconds after the
+# launch put the kill before the take-off on one machine (calibration and start-up took over 5 s),
+# and a machine stalling for seconds stretches a wall-clock outage in the flight.
 set -uo pipefail
-build="$1" work="$2" scenario="$3" name="$4" kill_after="$5" down_for="$6"
+build="$1" work="$2" scenario="$3" name="$4" kill_at="$5" down_for="$6"
 shift 6
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
+source "$root/tests/support/sim_time.sh"
 case "$name" in
   gains|controller) binary="$build/bin/sdlqr-$name" ;;
   estimator) binary="$build/bin/sdlqr-estimator" ;;
@@ -21,25 +23,20 @@ rm -rf "$work"
 mkdir -p "$work"
 log="$work/flight.lcmlog"
 
-now_us() { date +%s%6N; }
+restart_at=$(awk -v a="$kill_at" -v d="$down_for" 'BEGIN { print a + d }')
+sim_time_marks "$build" "$kill_at,$restart_at"
 "$root/scripts/launch" --build "$build" --log "$log" --without "$name" "$scenario" > "$work/launch.out" 2>&1 &
 launcher=$!
 "$binary" --config "$config" > "$work/$name.1.out" 2>&1 &
 pid=$!
-started=0
-for _ in $(seq 600); do
-  grep -q '^launch: scenario ' "$work/launch.out" && { started=1; break; }
-  kill -0 "$launcher" 2>/dev/null || break
-  sleep 0.1
-done
-[ "$started" = 1 ] || { echo "process_outage: the simulator never started"; cat "$work/launch.out"; kill -TERM "$launcher" "$pid"; wait; exit 1; }
-sleep "$kill_after"
-kill -0 "$pid" 2>/dev/null || { echo "process_outage: $name died on its own"; cat "$work/$name.1.out"; kill -TERM "$launcher"; wait; exit 1; }
-kill_us=$(now_us)
+abort() { echo "process_outage: $*"; cat "$work/launch.out"; kill -TERM "$launcher" "$pid" 2>/dev/null; stop_sim_time; wait; exit 1; }
+wait_sim_time "$kill_at" || abort "no kill: the flight never reached $kill_at s"
+kill -0 "$pid" 2>/dev/null || { cat "$work/$name.1.out"; abort "$name died on its own"; }
+now_us kill_us
 kill -KILL "$pid"
 wait "$pid" 2>/dev/null
-sleep "$down_for"
-restart_us=$(now_us)
+wait_sim_time "$restart_at" || abort "no restart: the flight never reached $restart_at s"
+now_us restart_us
 "$binary" --config "$config" > "$work/$name.2.out" 2>&1 &
 pid=$!
 wait "$launcher"

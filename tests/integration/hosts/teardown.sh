@@ -29,7 +29,13 @@ for _ in $(seq 1 300); do
   sleep 0.1
 done
 grep -q "every process is up" "$work/deploy.out" || fail "no process up after 30 s"
-sleep 2
+# Mid-flight: the simulator has started (the launcher says so; this script is outside the run's
+# network namespace and cannot hear its clock).
+for _ in $(seq 1 300); do
+  grep -q "launch: scenario" "$work/deploy.out" && break
+  sleep 0.1
+done
+grep -q "launch: scenario" "$work/deploy.out" || fail "the simulator never started"
 kill -TERM "$deploy_pid"
 wait "$deploy_pid"
 status=$?

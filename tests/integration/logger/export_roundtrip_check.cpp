@@ -31,28 +31,16 @@
 #include "sdlqr/logger/decode.hpp"
 #include "sdlqr/logger/log_reader.hpp"
 #include "sdlqr/logger/recorder.hpp"
+#include "recorded_events.hpp"
 
 namespace {
 
 using namespace sdlqr::logger;
 namespace fs = std::filesystem;
 
-struct RecordedEvent {
-  std::string channel;
-  std::vector<uint8_t> bytes;
-  int64_t receive_utime = 0;
-};
+using sdlqr::test::RecordedEvent;
 
-std::vector<RecordedEvent> readAll(const std::string& path) {
-  LogReader reader(path);
-  std::vector<RecordedEvent> events;
-  LogEvent event;
-  while (reader.next(&event)) {
-    events.push_back({std::string(event.channel), std::vector<uint8_t>(event.data, event.data + event.size),
-                      event.receive_utime});
-  }
-  return events;
-}
+std::vector<RecordedEvent> readAll(const std::string& path) { return sdlqr::test::readEvents(path); }
 
 template <class LcmType>
 std::vector<uint8_t> encode(const LcmType& message) {
@@ -171,17 +159,9 @@ int writeReorderedHeartbeats(const std::string& in, const std::string& out) {
     if (events[i].channel == "HEARTBEAT") heartbeats.push_back(i);
   }
   for (size_t h = 0; h + 1 < heartbeats.size(); h += 2) std::swap(events[heartbeats[h]], events[heartbeats[h + 1]]);
-  RecorderOptions options;
-  options.path = out;
-  options.queue_events = events.size() + 1;  // the whole log queued at once: nothing dropped
-  options.queue_bytes = std::numeric_limits<std::size_t>::max();
-  Recorder recorder(options);  // the logger's own writer
-  for (const RecordedEvent& e : events) {
-    if (!recorder.push(e.channel, e.bytes.data(), e.bytes.size(), e.receive_utime)) throw std::runtime_error("queue full");
-  }
-  recorder.stop();
+  sdlqr::test::writeEvents(out, events);  // the logger's own writer
   std::cout << "[ figures ] " << heartbeats.size() / 2 << " pairs of HEARTBEATs swapped\n";
-  return recorder.stats().write_errors == 0 ? 0 : 1;
+  return 0;
 }
 
 }  // namespace

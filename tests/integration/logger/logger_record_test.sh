@@ -54,7 +54,15 @@ LOGGER_PID=$!
 wait_ready "$WORK/kill.out"
 "$PEER" publish --rate 1000 --duration 6 --published "$WORK/kill.published" >/dev/null &
 PEER_PID=$!
-sleep 3
+# Mid-recording: its file has grown at six of its flushes (every 200 ms), over a second of messages.
+grown=0 last=0
+for _ in $(seq 60); do
+  size=$(stat -c %s "$WORK/killed.lcmlog" 2>/dev/null || echo 0)
+  [ "$size" -gt "$last" ] && grown=$((grown + 1)) last=$size
+  [ "$grown" -ge 6 ] && break
+  sleep 0.1
+done
+[ "$grown" -ge 6 ] || fail "the recorder wrote nothing for 6 s"
 KILL_UTIME=$(date +%s%6N)
 kill -9 $LOGGER_PID
 wait $LOGGER_PID 2>/dev/null

@@ -31,7 +31,7 @@ pair() {  # CASE BRIDGE_KEY EMULATOR_KEY (empty: unsigned)
   "$build/bin/sdlqr-px4-emulator" --config "$config" --mavlink udpout://127.0.0.1:14540:14580 \
     "${emulator_key[@]+"${emulator_key[@]}"}" >"$work/$case/emulator.out" 2>&1 &
   local emulator=$!
-  "$build/bin/sdlqr-top" --until-sim-time 3 --timeout 60 >/dev/null 2>"$work/$case/top.err" ||
+  "$build/bin/sdlqr-top" --at-sim-time 3 --timeout 60 >/dev/null 2>"$work/$case/top.err" ||
     { echo "FAIL $case: the emulator's clock never reached 3 s"; cat "$work/$case/top.err"; }
   kill -TERM "$bridge" "$emulator"
   wait "$bridge" "$emulator"

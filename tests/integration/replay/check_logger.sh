@@ -22,11 +22,14 @@ case "$mode" in
     "$check" --prefix-of "$dir/flight.lcmlog" "$dir/killed.lcmlog" --before $((killed - 1000000)) \
       --killed-pid "$(cat "$dir/killed.pid")" || exit 1
     head -c $((size / 2)) "$dir/killed.lcmlog" >"$dir/killed_half.lcmlog"
-    if "$check" --prefix-of "$dir/flight.lcmlog" "$dir/killed_half.lcmlog" --before $((killed - 1000000)) \
-         --killed-pid "$(cat "$dir/killed.pid")" >"$dir/killed_half.out"; then
-      echo "FAIL: the recording cut to half its bytes passed the check"; exit 1
+    "$check" --prefix-of "$dir/flight.lcmlog" "$dir/killed_half.lcmlog" --before $((killed - 1000000)) \
+      --killed-pid "$(cat "$dir/killed.pid")" >"$dir/killed_half.out"
+    half=$?
+    if [ "$half" -eq 1 ] && grep -q '^FAIL missing ' "$dir/killed_half.out"; then
+      echo "ok: the recording cut to half its bytes fails (exit 1, FAIL missing ...): $(grep figures "$dir/killed_half.out")"
+    else
+      echo "FAIL: the recording cut to half its bytes exits $half, expected 1 naming the missing events"; exit 1
     fi
-    echo "ok: the recording cut to half its bytes fails: $(grep figures "$dir/killed_half.out")"
     rm -f "$dir/killed_reordered.lcmlog"
     "$check" --reorder-heartbeats "$dir/killed.lcmlog" "$dir/killed_reordered.lcmlog" || exit 1
     "$check" --prefix-of "$dir/flight.lcmlog" "$dir/killed_reordered.lcmlog" --before $((killed - 1000000)) \

@@ -100,17 +100,21 @@ else
 fi
 
 fly unsigned --unsigned
+# The negative judges a flight that happened: its log is there and the rogue sent its commands;
+# then each check must fail for its own reason (exit 1 and the line naming it), not for any reason.
 "$build/bin/sdlqr-faultcheck" "$work/unsigned/flight.lcmlog" "${hover[@]}" >"$work/unsigned/hover.out"
 hover_status=$?
 "$build/bin/sdlqr-faultcheck" "$work/unsigned/flight.lcmlog" --require reject.rate_cmd.unsigned \
   --also-may-stop rogue-rate-cmd >"$work/unsigned/require.out"
 require_status=$?
 grep -E 'hover error' "$work/unsigned/hover.out"
-if [ "$rogue_status" -eq 0 ] && [ "$hover_status" -ne 0 ] && [ "$require_status" -ne 0 ]; then
-  echo "ok   (negative) unsigned: the same RATE_CMD were taken and the hover check fails"
+if [ "$rogue_status" -eq 0 ] && [ -s "$work/unsigned/flight.lcmlog" ] && [ "$hover_status" -eq 1 ] && grep -q '^FAIL hover error over' "$work/unsigned/hover.out" &&
+   [ "$require_status" -eq 1 ] && grep -q '^FAIL reject.rate_cmd.unsigned = 0 ' "$work/unsigned/require.out"; then
+  echo "ok   (negative) unsigned: the same RATE_CMD were taken: FAIL hover error, FAIL reject.rate_cmd.unsigned = 0"
 else
   echo "FAIL (negative) unsigned: rogue $rogue_status, hover check $hover_status, rejection check $require_status" \
-       "(expected 0, non-zero, non-zero)"
+       "(expected 0, 1 naming 'hover error', 1 naming 'reject.rate_cmd.unsigned = 0'; log: $work/unsigned/flight.lcmlog)"
+  grep -E '^FAIL' "$work/unsigned/hover.out" "$work/unsigned/require.out"
   ok=1
 fi
 exit "$ok"

@@ -32,8 +32,8 @@ TEST(BusLayout, HighRateChannelsHavePortsOfTheirOwn) {
 }
 
 TEST(BusLayout, SingleLayoutPutsEveryChannelOnTheBase) {
-  for (const auto& entry : channel::kSplitPorts) {
-    EXPECT_EQ(channelUrl(BusLayout::kSingle, kBase, entry.channel), kBase);
+  for (const ChannelInfo& entry : kChannels) {
+    EXPECT_EQ(channelUrl(BusLayout::kSingle, kBase, entry.name), kBase);
   }
   EXPECT_EQ(layoutUrls(BusLayout::kSingle, kBase), std::vector<std::string>{kBase});
 }
@@ -44,9 +44,9 @@ TEST(BusLayout, LayoutUrlsListEveryPortOnceBaseFirst) {
   EXPECT_EQ(urls.front(), kBase);
   EXPECT_EQ(std::set<std::string>(urls.begin(), urls.end()).size(), urls.size());
   // Every channel's URL is one of them: a recorder on these hears every channel.
-  for (const auto& entry : channel::kSplitPorts) {
-    const std::string url = channelUrl(BusLayout::kSplit, kBase, entry.channel);
-    EXPECT_NE(std::find(urls.begin(), urls.end(), url), urls.end()) << entry.channel;
+  for (const ChannelInfo& entry : kChannels) {
+    const std::string url = channelUrl(BusLayout::kSplit, kBase, entry.name);
+    EXPECT_NE(std::find(urls.begin(), urls.end(), url), urls.end()) << entry.name;
   }
   EXPECT_EQ(urls.size(), 8u);
   // The monitor URL of sdlqr-bridge merge is none of them (it would forward forever).

@@ -15,6 +15,7 @@
 #include "sdlqr/estimator/estimator_core.hpp"
 #include "sdlqr/gains/gains_core.hpp"
 #include "sdlqr/lowlevel/lowlevel_core.hpp"
+#include "sdlqr/messages/in_process_wiring.hpp"
 #include "sdlqr/mission/mission_core.hpp"
 #include "sdlqr/sim/sim_core.hpp"
 
@@ -31,8 +32,8 @@ struct Config {
   FaultParams faults = FaultParams::load(root.child("faults"));
 };
 
-// The channels of the bus, without the bus.
-class Stack final : public Outbox {
+// The cores wired by their ports as in the in-process loop, without recording.
+class Stack {
  public:
   Stack(const Config& c, const mission::Scenario& scenario)
       : mission_(scenario, trajectory::TrajectoryParams::load(c.root.child("trajectory")), c.lqr, {}),
@@ -43,46 +44,24 @@ class Stack final : public Outbox {
         lowlevel_(c.vehicle, lowlevel::LowlevelParams::load(c.root.child("lowlevel")), c.lqr.gravity, c.faults) {}
 
   void step() {
-    const double now_s = 1e-6 * static_cast<double>(sim_.simulator().utime());
-    controller_.onWallTime(now_s);
-    gains_.onWallTime(now_s);
-    lowlevel_.onWallTime(now_s);
-    sim_.step(*this);
+    wiring_.feedWallTime(1e-6 * static_cast<double>(sim_.simulator().utime()));
+    sim_.step(wiring_.outboxOf<sim::SimCore>());
   }
   const sim::SimCore& sim() const { return sim_; }
   const controller::ControllerCore& controller() const { return controller_; }
   const gains::GainsCore& gains() const { return gains_; }
 
  private:
-  void publish(const ImuSample& m) override {
-    lowlevel_.onImu(m, *this);
-    estimator_.onImu(m, *this);
-  }
-  void publish(const VioPose& m) override { estimator_.onVio(m); }
-  void publish(const SimTruth&) override {}
-  void publish(const StateEstimate& m) override {
-    gains_.onStateEstimate(m, *this);
-    controller_.onStateEstimate(m, *this);
-  }
-  void publish(const GainSet& m) override { controller_.onGains(m); }
-  void publish(const RateCommand& m) override { lowlevel_.onRateCommand(m); }
-  void publish(const Reference& m) override { gains_.onReference(m); }
-  void publish(const MotorCommand& m) override { sim_.onMotorCommand(m); }
-  void publish(const Command& m) override {
-    controller_.onCommand(m);
-    lowlevel_.onCommand(m);
-  }
-  void publish(const Disturbance&) override {}
-  void publish(const ParamsUpdate&) override {}
-  void publish(const Trajectory&) override {}
-  void publish(const SimClockTick& m) override { mission_.onClock(m.utime, *this); }
-
   mission::MissionCore mission_;
   sim::SimCore sim_;
   estimator::EstimatorCore estimator_;
   gains::GainsCore gains_;
   controller::ControllerCore controller_;
   lowlevel::LowlevelCore lowlevel_;
+  NoObserver none_;
+  InProcessWiring<NoObserver, lowlevel::LowlevelCore, estimator::EstimatorCore, gains::GainsCore,
+                  controller::ControllerCore, mission::MissionCore, sim::SimCore>
+      wiring_{none_, lowlevel_, estimator_, gains_, controller_, mission_, sim_};
 };
 
 TEST(CoresAllocation, AHoverAllocatesNothingInAnyCore) {

@@ -12,9 +12,11 @@
 #include <type_traits>
 
 #include "leaf_support.hpp"
+#include "sdlqr/foxglove/lcm_json.hpp"
 #include "sdlqr/logger/csv_row.hpp"
 #include "sdlqr/replay/series_comparison.hpp"
 #include "sdlqr_probe/lcmtypes/generated/convert.hpp"
+#include "sdlqr_probe/lcmtypes/generated/json_schemas.hpp"
 #include "sdlqr_probe/lcmtypes/generated/lcm_fields.hpp"
 #include "sdlqr_probe/lcmtypes/generated/plain_fields.hpp"
 #include "sdlqr_probe/lcmtypes/generated/wire_fits.hpp"
@@ -35,6 +37,17 @@ StateEstimate estimateWithWind() {
   s.position = sdlqr::Vec3(1.0, 2.0, 3.0);
   s.wind = sdlqr::Vec3(0.5, -1.25, 2.0);
   return s;
+}
+
+TEST(NewField, TheJsonSchemaAndTheJsonEncodingCarryIt) {
+  const sdlqr::foxglove::Json schema = sdlqr::foxglove::Json::parse(lcmtypes::findJsonSchema("state_estimate_t")->text);
+  EXPECT_EQ(schema["title"], "sdlqr_probe.state_estimate_t");
+  EXPECT_EQ(schema["properties"]["wind"]["maxItems"], 3);
+  EXPECT_EQ(schema["properties"]["wind"]["description"], "[m/s] added by the probe: only this line and its use name it (null: not finite)");
+  const sdlqr::foxglove::Json trajectory = sdlqr::foxglove::Json::parse(lcmtypes::findJsonSchema("trajectory_t")->text);
+  EXPECT_EQ(trajectory["properties"]["yaw_rate"]["description"].get<std::string>().rfind("[rad/s]", 0), 0u);
+  const sdlqr::foxglove::Json json = sdlqr::foxglove::toJson(toLcm(estimateWithWind()));
+  EXPECT_EQ(json["wind"], sdlqr::foxglove::Json::array({0.5, -1.25, 2.0}));
 }
 
 TEST(NewField, TheConversionsCarryItBothWays) {

@@ -33,6 +33,22 @@ TEST(StressScenario, SimAndThrowModeKeysAreRead) {
   EXPECT_EQ(s.throw_mode.type, ThrowType::kDrop);
 }
 
+// The simulator reads the scenario's world itself (sdlqr-sim --scenario), not through the mission.
+TEST(StressScenario, TheSimulatorReadsTheWorldTheScenarioDeclares) {
+  const std::string path = sdlqr::test::tempPath("stress_sim.yaml");
+  std::ofstream(path) << "sim: {plant: {mass_scale: 1.2}, wind: {steady: [1, 0, 0]}}\nevents: []\n";
+  const sim::SimStress world = sim::SimStress::loadFromScenario(path);
+  EXPECT_EQ(world.plant.mass_scale, Scenario::load(path).sim.plant.mass_scale);
+  EXPECT_EQ(world.wind.steady, Vec3(1, 0, 0));
+  std::ofstream(path) << "sim: {plant: {mass_scale: 0.1}}\n";
+  try {
+    sim::SimStress::loadFromScenario(path);
+    ADD_FAILURE() << "a bad mass_scale was read";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("sim.plant.mass_scale"), std::string::npos) << e.what();
+  }
+}
+
 TEST(StressScenario, BadValuesNameTheirKey) {
   EXPECT_NE(errorOf("sim: {plant: {mass_scale: 0.1}}").find("sim.plant.mass_scale"), std::string::npos);
   EXPECT_NE(errorOf("sim: {wnd: {}}").find("sim.wnd"), std::string::npos);

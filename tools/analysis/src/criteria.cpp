@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 namespace sdlqr::analysis {
 
@@ -75,13 +76,28 @@ void addRecoveryCriteria(std::vector<CriterionSpec>& c) {
                      [](const FlightReport& r) { return ofRecovery(r, &RecoveryReport::detect_delay); }));
 }
 
+CriterionSpec always(CriterionSpec c, double default_limit) {
+  c.always = true;
+  c.default_limit = default_limit;
+  return c;
+}
+
 std::vector<CriterionSpec> makeCriteria() {
   std::vector<CriterionSpec> c;
   // Every flight.
-  c.push_back(flight("nonfinite_messages", B::kAtMost, "count", "messages with NaN or Inf (estimates, commands, gains)",
-                     [](const FlightReport& r) { return static_cast<double>(r.nonfinite); }));
-  c.push_back(flight("crashed", B::kAtMost, "-", "vehicle crashed (1) or not (0)",
-                     [](const FlightReport& r) { return r.crashed ? 1.0 : 0.0; }));
+  c.push_back(always(flight("nonfinite_messages", B::kAtMost, "count", "messages with NaN or Inf (estimates, commands, gains)",
+                            [](const FlightReport& r) { return static_cast<double>(r.nonfinite); }), 0.0));
+  c.push_back(always(flight("crashed", B::kAtMost, "-", "vehicle crashed (1) or not (0)",
+                            [](const FlightReport& r) { return r.crashed ? 1.0 : 0.0; }), 0.0));
+  // Every event of the scenario (scenario_events.hpp): what it played reached the log.
+  CriterionSpec event;
+  event.key = "event_in_log";
+  event.bound = B::kAtLeast;
+  event.unit = "-";
+  event.description = "the scenario event's message in the log (1) or not (0)";
+  event.scope = S::kEvent;
+  event.of_event = [](const ExpectedEvent& e) { return e.found() ? 1.0 : 0.0; };
+  c.push_back(always(event, 1.0));
   // Setpoints and jumps (Fig. 5).
   c.push_back(setpoint("jump_settle_time", S::kJump, "s", "settle time: error below {jump_settle_error} and staying",
                        [](const SetpointWindow& w) { return w.settle_time; }));
@@ -125,8 +141,13 @@ std::vector<CriterionSpec> makeCriteria() {
                      [](const FlightReport& r) { return r.state_est_rate_hz; }));
   c.push_back(flight("max_tilt_deg", B::kAtMost, "deg", "largest tilt while airborne",
                      [](const FlightReport& r) { return r.max_tilt_deg; }));
-  c.push_back(flight("touchdown_speed_max", B::kAtMost, "m/s", "fastest vertical speed at a ground contact",
-                     [](const FlightReport& r) { return r.touchdown_speed; }));
+  CriterionSpec touchdown;
+  touchdown.key = "touchdown_speed_max";
+  touchdown.unit = "m/s";
+  touchdown.description = "after LAND, vertical speed at touchdown (none before the log ends: not landed)";
+  touchdown.scope = S::kLanding;
+  touchdown.of_landing = [](const Landing& l) { return l.touchdown_speed; };
+  c.push_back(touchdown);
   // Saturation where it happens (Saturation in flight_report.hpp), over the airborne flight.
   c.push_back(flight("thrust_demand_outside_max", B::kAtMost, "count",
                      "RATE_CMD whose thrust demand before the controller's clip left [c_min, c_max], or NaN",
@@ -221,37 +242,64 @@ std::string notJudgedReason(const CriterionSpec& spec, const FlightReport& repor
   return {};
 }
 
+// A window of the scenario that has no figures (its event not in the log): NaN, a failed check,
+// with the reason as the check's note.
+template <class Window, class Of>
+std::pair<double, std::string> valueOf(const Window& w, Of of) {
+  if (!w.missing.empty()) return {kNotReached, w.missing};
+  return {of(w), ""};
+}
+
 // Appends the checks of one criterion, one per window of its scope.
 void judgeOne(const CriterionSpec& spec, double limit, const std::string& description, FlightReport& report) {
-  auto add = [&](const std::string& window, double value) {
-    report.checks.push_back(makeCheck(spec, window, description, value, limit));
+  auto add = [&](const std::string& window, std::pair<double, std::string> value) {
+    report.checks.push_back(makeCheck(spec, window, description, value.first, limit));
+    report.checks.back().note = std::move(value.second);
   };
   switch (spec.scope) {
     case S::kFlight:
-      add("", spec.of_flight(report));
+      add("", {spec.of_flight(report), ""});
+      break;
+    case S::kEvent:
+      for (const ExpectedEvent& e : report.events) add(e.label, {spec.of_event(e), e.describe()});
       break;
     case S::kJump:
     case S::kTakeoff:
     case S::kSetpoint:
       for (const SetpointWindow& w : report.setpoints) {
         const bool applies = spec.scope == S::kSetpoint || w.is_jump == (spec.scope == S::kJump);
-        if (applies) add(w.label, spec.of_setpoint(w));
+        if (applies) add(w.label, valueOf(w, spec.of_setpoint));
       }
       break;
     case S::kPull:
-      for (const PullWindow& p : report.pulls) add(p.label, spec.of_pull(p));
+      for (const PullWindow& p : report.pulls) add(p.label, valueOf(p, spec.of_pull));
+      break;
+    case S::kLanding:
+      for (const Landing& l : report.landings) add(l.label, valueOf(l, spec.of_landing));
       break;
     case S::kTrajectory:
-      for (const PathTrackingReport& t : report.trajectories) add(t.label, spec.of_trajectory(t));
+      for (const PathTrackingReport& t : report.trajectories) add(t.label, valueOf(t, spec.of_trajectory));
       break;
     case S::kTrajectoryPull:
       for (const PathTrackingReport& t : report.trajectories) {
-        if (t.pulls.empty()) add(t.label + "][no pull", kNotReached);
-        for (size_t i = 0; i < t.pulls.size(); ++i) {
-          add(t.label + "][pull " + std::to_string(i + 1), spec.of_trajectory_pull(t.pulls[i]));
-        }
+        if (t.pulls.empty()) add(t.label + "][no pull", {kNotReached, t.missing});
+        for (const PathPull& p : t.pulls) add(t.label + "][" + p.label, valueOf(p, spec.of_trajectory_pull));
       }
       break;
+  }
+}
+
+// What a scoped criterion judges, for the check that fails when the scenario holds none of it.
+const char* windowsOf(Scope scope) {
+  switch (scope) {
+    case S::kJump: return "jump (goto)";
+    case S::kTakeoff: return "takeoff";
+    case S::kSetpoint: return "takeoff or jump";
+    case S::kPull: return "pull while holding a setpoint";
+    case S::kLanding: return "land";
+    case S::kTrajectory:
+    case S::kTrajectoryPull: return "trajectory";
+    default: return "event";
   }
 }
 
@@ -319,26 +367,22 @@ void checkCriteriaKeys(const mission::Scenario& scenario) {
 }
 
 void judgeCriteria(FlightReport& report, const mission::Scenario& scenario, const AnalysisOptions& options) {
-  bool judges_trajectories = false;
   for (const CriterionSpec& spec : criteria()) {
-    const bool always = spec.key == "nonfinite_messages" || spec.key == "crashed";
     const auto it = scenario.criteria.find(std::string(spec.key));
-    if (!always && it == scenario.criteria.end()) continue;
+    if (!spec.always && it == scenario.criteria.end()) continue;
     const std::string reason = notJudgedReason(spec, report);
     if (!reason.empty()) {
       report.not_judged.push_back({std::string(spec.key), reason});
       continue;
     }
-    judges_trajectories |= spec.scope == S::kTrajectory || spec.scope == S::kTrajectoryPull;
-    judgeOne(spec, always ? 0.0 : it->second, describe(spec, scenario, options), report);
-  }
-  // Trajectory criteria and nothing tracked: the flight did not do what the scenario asked.
-  if (judges_trajectories && report.trajectories.empty()) {
-    CriterionSpec tracked;
-    tracked.key = "trajectories_tracked";
-    tracked.bound = Bound::kAtLeast;
-    tracked.unit = "count";
-    report.checks.push_back(makeCheck(tracked, "", "trajectories the controller tracked", 0.0, 1.0));
+    const size_t before = report.checks.size();
+    const double limit = it == scenario.criteria.end() ? spec.default_limit : it->second;
+    judgeOne(spec, limit, describe(spec, scenario, options), report);
+    // A criterion of windows the scenario never plays judges nothing: that fails, it never passes.
+    if (report.checks.size() == before && spec.scope != S::kFlight && spec.scope != S::kEvent) {
+      report.checks.push_back(makeCheck(spec, "", describe(spec, scenario, options), kNotReached, limit));
+      report.checks.back().note = std::string("the scenario has no ") + windowsOf(spec.scope) + " for it to judge";
+    }
   }
 }
 

@@ -20,9 +20,12 @@ void forTruthIn(const logger::FlightLog& log, double start, double end, Visit vi
 
 // Airborne span, tilt, touchdown speed and crash, from the truth.
 void summarizeTruth(const logger::FlightLog& log, FlightReport& report);
-// Setpoint windows after take-off and each jump, and the pulls while holding a setpoint.
-void analyzeWindows(const logger::FlightLog& log, const mission::Scenario& scenario, const AnalysisOptions& options,
-                    FlightReport& report);
+// Setpoint windows after take-off and each jump, and the pulls while holding a setpoint, of the
+// scenario's events in report.events (those not in the log: windows with `missing` set).
+void analyzeWindows(const logger::FlightLog& log, const AnalysisOptions& options, FlightReport& report,
+                    const mission::Scenario& scenario);
+// The touchdown after each LAND of the scenario.
+void analyzeLandings(const logger::FlightLog& log, FlightReport& report);
 // Estimate against the truth at the same instant.
 EstimatorAccuracy estimatorAccuracy(const logger::FlightLog& log);
 // Message rates over the airborne span, solver and controller timing, bus latency, NaN count.

@@ -1,7 +1,7 @@
 // Setpoint windows (take-off hold, reference jumps: Fig. 5) and pulls (Fig. 4) of a flight.
 
 #include <cmath>
-#include <set>
+#include <limits>
 
 #include "flight_parts.hpp"
 
@@ -14,73 +14,30 @@ struct Event {
   enum Kind { kTakeoff, kGoto, kLand, kPull, kTrajectory } kind = kGoto;
   Vec3 position = Vec3::Zero();
   const Disturbance* disturbance = nullptr;
-  std::string label;
+  const ExpectedEvent* expected = nullptr;
 };
 
-std::vector<Event> commandEvents(const logger::FlightLog& log) {
+// The scenario's events that bound the windows, as the log has them, in time order: take-offs,
+// jumps, landings, pulls and trajectories whose message the recorder heard.
+std::vector<Event> flightEvents(const logger::FlightLog& log, const std::vector<ExpectedEvent>& expected) {
   std::vector<Event> events;
-  std::set<int64_t> command_seqs;
-  for (const Command& c : log.command.messages) {
-    // sdlqr-mission re-sends its current command once a second (same seq) for a restarted
-    // controller: one event per command.
-    if (!command_seqs.insert(c.seq).second) continue;
+  for (const ExpectedEvent& x : expected) {
+    if (!x.found()) continue;
     Event e;
-    e.t = seconds(c.utime);
-    e.position = c.position;
-    if (c.command == CommandType::kTakeoff) e.kind = Event::kTakeoff;
-    else if (c.command == CommandType::kGoto) e.kind = Event::kGoto;
-    else if (c.command == CommandType::kLand) e.kind = Event::kLand;
-    else continue;
-    events.push_back(e);
-  }
-  return events;
-}
-
-// Labels come from the scenario: its events of the same kind, in the same order.
-void labelFromScenario(std::vector<Event>& events, const mission::Scenario& scenario) {
-  std::vector<const mission::ScenarioEvent*> commands, pulls;
-  for (const mission::ScenarioEvent& s : scenario.events) {
-    if (s.kind == mission::ScenarioEvent::Kind::kCommand &&
-        (s.command.command == CommandType::kGoto || s.command.command == CommandType::kTakeoff ||
-         s.command.command == CommandType::kLand)) {
-      commands.push_back(&s);
-    } else if (s.kind == mission::ScenarioEvent::Kind::kDisturbance) {
-      pulls.push_back(&s);
+    e.t = x.seen;
+    e.expected = &x;
+    const auto i = static_cast<size_t>(x.message);
+    switch (x.kind) {
+      case ExpectedEvent::Kind::kTakeoff: e.kind = Event::kTakeoff; e.position = log.command[i].position; break;
+      case ExpectedEvent::Kind::kGoto: e.kind = Event::kGoto; e.position = log.command[i].position; break;
+      case ExpectedEvent::Kind::kLand: e.kind = Event::kLand; break;
+      case ExpectedEvent::Kind::kPull: e.kind = Event::kPull; e.disturbance = &log.disturbance[i]; break;
+      case ExpectedEvent::Kind::kTrajectory: e.kind = Event::kTrajectory; break;
+      default: continue;
     }
-  }
-  size_t next_command = 0, next_pull = 0;
-  for (Event& e : events) {
-    if (e.kind == Event::kTrajectory) continue;
-    std::vector<const mission::ScenarioEvent*>& source_list = e.kind == Event::kPull ? pulls : commands;
-    size_t& next = e.kind == Event::kPull ? next_pull : next_command;
-    const mission::ScenarioEvent* source = next < source_list.size() ? source_list[next++] : nullptr;
-    if (source && !source->label.empty()) e.label = source->label;
-    if (e.label.empty()) {
-      static const char* names[] = {"takeoff", "goto", "land", "pull"};
-      e.label = names[e.kind];
-    }
-  }
-}
-
-std::vector<Event> flightEvents(const logger::FlightLog& log, const mission::Scenario& scenario) {
-  std::vector<Event> events = commandEvents(log);
-  for (const Disturbance& d : log.disturbance.messages) {
-    Event e;
-    e.t = seconds(d.start_utime > 0 ? d.start_utime : d.utime);
-    e.kind = Event::kPull;
-    e.disturbance = &d;
-    events.push_back(e);
-  }
-  // A trajectory ends the setpoint window before it (path_tracking.hpp judges the flight on it).
-  for (const Trajectory& t : log.trajectory.messages) {
-    Event e;
-    e.t = seconds(t.start_utime > 0 ? t.start_utime : t.utime);
-    e.kind = Event::kTrajectory;
-    e.label = "trajectory";
     events.push_back(e);
   }
   std::stable_sort(events.begin(), events.end(), [](const Event& a, const Event& b) { return a.t < b.t; });
-  labelFromScenario(events, scenario);
   return events;
 }
 
@@ -116,7 +73,7 @@ double settleTime(const logger::FlightLog& log, double from, double end, double 
 SetpointWindow setpointWindow(const logger::FlightLog& log, const Event& e, double end, const Vec3& previous,
                               double settle_error, double hover_window) {
   SetpointWindow w;
-  w.label = e.label;
+  w.label = e.expected->label;
   w.is_jump = e.kind == Event::kGoto;
   w.start = e.t;
   w.end = end;
@@ -167,7 +124,7 @@ double returnOvershoot(const logger::FlightLog& log, const PullWindow& p) {
 
 PullWindow pullWindow(const logger::FlightLog& log, const Event& e, double end, double return_error) {
   PullWindow p;
-  p.label = e.label;
+  p.label = e.expected->label;
   p.start = e.t;
   p.release = e.t + e.disturbance->duration;
   p.end = end;
@@ -181,29 +138,76 @@ PullWindow pullWindow(const logger::FlightLog& log, const Event& e, double end, 
   return p;
 }
 
+
+// A window the scenario expected and the log does not hold: every criterion of it fails, naming why.
+void addMissingWindows(const std::vector<ExpectedEvent>& expected, FlightReport& report) {
+  for (const ExpectedEvent& x : expected) {
+    if (x.found()) continue;
+    if (x.kind == ExpectedEvent::Kind::kTakeoff || x.kind == ExpectedEvent::Kind::kGoto) {
+      SetpointWindow w;
+      w.label = x.label;
+      w.is_jump = x.kind == ExpectedEvent::Kind::kGoto;
+      w.start = w.end = x.at;
+      w.missing = x.describe();
+      report.setpoints.push_back(w);
+    } else if (x.kind == ExpectedEvent::Kind::kPull && !x.on_trajectory) {
+      PullWindow p;
+      p.label = x.label;
+      p.start = p.release = p.end = x.at;
+      p.missing = x.describe();
+      report.pulls.push_back(p);
+    }
+  }
+  const auto by_start = [](const auto& a, const auto& b) { return a.start < b.start; };
+  std::stable_sort(report.setpoints.begin(), report.setpoints.end(), by_start);
+  std::stable_sort(report.pulls.begin(), report.pulls.end(), by_start);
+}
+
 }  // namespace
 
-void analyzeWindows(const logger::FlightLog& log, const mission::Scenario& scenario, const AnalysisOptions& options,
-                    FlightReport& report) {
+void analyzeWindows(const logger::FlightLog& log, const AnalysisOptions& options, FlightReport& report,
+                    const mission::Scenario& scenario) {
   const double log_end = log.sim_truth.empty() ? 0.0 : seconds(log.sim_truth.back().utime);
-  const std::vector<Event> events = flightEvents(log, scenario);
+  const std::vector<Event> events = flightEvents(log, report.events);
   const double settle_error = scenario.criterion("jump_settle_error", options.settle_error);
   const double return_error = scenario.criterion("pull_return_error", options.return_error);
   report.settle_error = settle_error;
   report.return_error = return_error;
   Vec3 previous_setpoint = Vec3::Constant(kNotReached);
-  bool on_trajectory = false;  // pulls while tracking a trajectory are judged against the path
   for (size_t i = 0; i < events.size(); ++i) {
     const Event& e = events[i];
-    if (e.kind != Event::kPull) on_trajectory = e.kind == Event::kTrajectory;
-    if (on_trajectory) previous_setpoint = Vec3::Constant(kNotReached);
+    if (e.kind == Event::kTrajectory) previous_setpoint = Vec3::Constant(kNotReached);
     const double end = i + 1 < events.size() ? events[i + 1].t : log_end;
     if (e.kind == Event::kTakeoff || e.kind == Event::kGoto) {
       report.setpoints.push_back(setpointWindow(log, e, end, previous_setpoint, settle_error, options.hover_window));
       previous_setpoint = report.setpoints.back().to;
-    } else if (e.kind == Event::kPull && !on_trajectory) {
+    } else if (e.kind == Event::kPull && !e.expected->on_trajectory) {
+      // Pulls the scenario plays on a trajectory are judged against the path (path_tracking.hpp).
       report.pulls.push_back(pullWindow(log, e, end, return_error));
     }
+  }
+  addMissingWindows(report.events, report);
+}
+
+void analyzeLandings(const logger::FlightLog& log, FlightReport& report) {
+  for (const ExpectedEvent& x : report.events) {
+    if (x.kind != ExpectedEvent::Kind::kLand) continue;
+    Landing landing;
+    landing.label = x.label;
+    landing.start = x.found() ? x.seen : x.at;
+    if (!x.found()) landing.missing = x.describe();
+    bool airborne = false;
+    double vz = 0.0;
+    forTruthIn(log, landing.start, std::numeric_limits<double>::infinity(), [&](const SimTruth& s) {
+      if (std::isfinite(landing.touchdown)) return;
+      if (s.on_ground && airborne) {
+        landing.touchdown = seconds(s.utime);
+        landing.touchdown_speed = std::abs(vz);
+      }
+      airborne = !s.on_ground;
+      vz = s.velocity[2];
+    });
+    report.landings.push_back(landing);
   }
 }
 

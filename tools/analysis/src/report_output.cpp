@@ -63,6 +63,7 @@ void writeChecks(logger::JsonWriter& json, const FlightReport& r) {
     json.member("limit", c.limit);
     json.member("rule", c.upper ? "<=" : ">=");
     json.memberBool("pass", c.pass);
+    if (!c.note.empty()) json.member("note", c.note);
     json.endObject();
   }
   json.endArray();
@@ -72,6 +73,33 @@ void writeChecks(logger::JsonWriter& json, const FlightReport& r) {
     json.beginObject();
     json.member("key", n.key);
     json.member("reason", n.reason);
+    json.endObject();
+  }
+  json.endArray();
+}
+
+// The scenario's events as the log had them, and the touchdown after each LAND.
+void writeEvents(logger::JsonWriter& json, const FlightReport& r) {
+  json.key("events");
+  json.beginArray();
+  for (const ExpectedEvent& e : r.events) {
+    json.beginObject();
+    json.member("label", e.label);
+    json.member("channel", e.channel);
+    json.member("at_s", e.at);
+    json.memberBool("in_log", e.found());
+    json.member("seen_s", e.seen);
+    json.endObject();
+  }
+  json.endArray();
+  json.key("landings");
+  json.beginArray();
+  for (const Landing& l : r.landings) {
+    json.beginObject();
+    json.member("label", l.label);
+    json.member("start_s", l.start);
+    json.member("touchdown_s", l.touchdown);
+    json.member("touchdown_speed_mps", l.touchdown_speed);
     json.endObject();
   }
   json.endArray();
@@ -102,6 +130,7 @@ void writeJson(const FlightReport& r, std::ostream& out) {
   json.memberBool("passed", r.passed());
   json.member("flight_start_s", r.flight_start);
   json.member("flight_end_s", r.flight_end);
+  writeEvents(json, r);
   json.key("setpoints");
   json.beginArray();
   for (const SetpointWindow& w : r.setpoints) {
@@ -318,6 +347,10 @@ void writeSetpoints(const FlightReport& r, std::ostream& out) {
   std::snprintf(line, sizeof line, "  setpoint            size    %-14s  overshoot  steady error\n", settle.c_str());
   out << line;
   for (const SetpointWindow& w : r.setpoints) {
+    if (!w.missing.empty()) {
+      out << "  " << w.missing << "\n";
+      continue;
+    }
     std::snprintf(line, sizeof line, "  %-18s %5.2f m  %-14s  %7s  %s\n", w.label.c_str(), w.size,
                   format("%.2f s", w.settle_time).c_str(), w.is_jump ? format("%.1f %%", 100.0 * w.overshoot).c_str() : "-",
                   format("%.1f cm", 100.0 * w.steady_error).c_str());
@@ -328,6 +361,10 @@ void writeSetpoints(const FlightReport& r, std::ostream& out) {
 void writePulls(const FlightReport& r, std::ostream& out) {
   char line[512];
   for (const PullWindow& p : r.pulls) {
+    if (!p.missing.empty()) {
+      out << "  " << p.missing << "\n";
+      continue;
+    }
     std::snprintf(line, sizeof line, "  %-18s %s: pushed %.2f m away, back within %s after %s, %.0f %% past the setpoint\n",
                   p.label.c_str(), describeDisturbance(p.disturbance).c_str(), p.max_deviation,
                   formatQuantity(r.return_error, "m").c_str(), format("%.2f s", p.return_time).c_str(),
@@ -339,6 +376,10 @@ void writePulls(const FlightReport& r, std::ostream& out) {
 void writeTrajectories(const FlightReport& r, std::ostream& out) {
   char line[512];
   for (const PathTrackingReport& t : r.trajectories) {
+    if (!t.missing.empty()) {
+      out << "  " << t.missing << "\n";
+      continue;
+    }
     std::snprintf(line, sizeof line, "  %s (%s, %s, %d samples, %.2f m per lap): %s, %.2f laps\n", t.label.c_str(),
                   t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial", t.closed ? "closed" : "open",
                   t.samples, t.path_length,
@@ -358,8 +399,12 @@ void writeTrajectories(const FlightReport& r, std::ostream& out) {
                   t.thrust_saturation_percent, t.thrust_min, t.thrust_max, static_cast<long long>(t.thrust_violations));
     out << line;
     for (const PathPull& p : t.pulls) {
-      std::snprintf(line, sizeof line, "    pull at %.2f s for %.2f s: %.2f m off the path at release, back on it after %s\n",
-                    p.start, p.release - p.start, p.distance_at_release, format("%.2f s", p.return_time).c_str());
+      if (!p.missing.empty()) {
+        out << "    " << p.missing << "\n";
+        continue;
+      }
+      std::snprintf(line, sizeof line, "    %s at %.2f s for %.2f s: %.2f m off the path at release, back on it after %s\n",
+                    p.label.c_str(), p.start, p.release - p.start, p.distance_at_release, format("%.2f s", p.return_time).c_str());
       out << line;
     }
   }
@@ -481,8 +526,11 @@ void writeSummary(const FlightReport& r, std::ostream& out) {
   writeMeasurements(r, out);
   writeCheckTable(r, out);
   for (const Check& c : r.checks) {
-    if (!c.pass) out << "  FAILED " << c.name << ": " << formatQuantity(c.value, c.unit) << " (limit " << formatLimit(c) << ")\n";
+    if (c.pass) continue;
+    out << "  FAILED " << c.name << ": " << formatQuantity(c.value, c.unit) << " (limit " << formatLimit(c) << ")";
+    out << (c.note.empty() ? "" : ": " + c.note) << "\n";
   }
+  if (r.checks.empty()) out << "  FAILED: no check judged this flight\n";
 }
 
 }  // namespace sdlqr::analysis

@@ -52,9 +52,8 @@ BatchContext BatchContext::forSpec(BatchSpec spec) {
   analysis::checkCriteriaKeys(c.scenario);
   c.config = closedloop::StackConfig::load(c.scenario.vehicle_path);
   for (const analysis::CriterionSpec& spec : analysis::criteria()) {
-    const bool always = spec.key == "nonfinite_messages" || spec.key == "crashed";
     const bool named = c.scenario.criteria.count(std::string(spec.key)) > 0;
-    if ((always || named) && !spec.needs_heartbeats && !spec.needs_calibration) c.criteria.emplace_back(spec.key);
+    if ((spec.always || named) && !spec.needs_heartbeats && !spec.needs_calibration) c.criteria.emplace_back(spec.key);
   }
   return c;
 }

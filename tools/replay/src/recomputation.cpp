@@ -65,12 +65,12 @@ void Recomputation::step() {
   const auto i = static_cast<std::size_t>(p.index);
   feedWallTime(flight_.utimeAt(p));
   switch (p.kind) {
-    case InputKind::kImu: estimator_.onImu(flight_.imu[i], outbox_); break;
-    case InputKind::kVioPose: estimator_.onVio(flight_.vio_pose[i]); break;
+    case InputKind::kImu: deliver(flight_.imu[i]); break;
+    case InputKind::kVioPose: deliver(flight_.vio_pose[i]); break;
     case InputKind::kStateEstimate: onRecordedEstimate(flight_.state_estimate[i]); break;
     case InputKind::kCommand: heard_commands_.push_back(i); break;
     case InputKind::kTrajectory: onRecordedTrajectory(i); break;
-    case InputKind::kParams: onParams(flight_.params[i]); break;
+    case InputKind::kParams: deliver(flight_.params[i]); break;
     case InputKind::kGains: onRecordedGains(flight_.gains[i]); break;
     case InputKind::kUndecodable: onUndecodable(flight_.undecodable[i]); break;
   }
@@ -90,8 +90,7 @@ void Recomputation::finish() {
 // Wall time is simulation time in the replay: the watchdogs see the recorded stream's pace.
 void Recomputation::feedWallTime(int64_t utime) {
   const double now_s = 1e-6 * static_cast<double>(utime);
-  gains_.onWallTime(now_s);
-  controller_.onWallTime(now_s);
+  std::apply([&](auto&... core) { (ports::feedWallTime(core, now_s), ...); }, cores());
 }
 
 void Recomputation::updateRejected() {
@@ -118,8 +117,7 @@ void Recomputation::onRecordedEstimate(const StateEstimate& recorded) {
   const auto ours = waiting_.find(recorded.seq);
   if ((ours == waiting_.end() || ours->second.utime != recorded.utime) && !aheadOfItsImu(recorded)) {
     ++pairing_.foreign_estimates;
-    gains_.onStateEstimate(recorded, outbox_);
-    controller_.onStateEstimate(recorded, outbox_);
+    deliver(recorded);
     return;
   }
   handed_over_up_to_ = std::max(handed_over_up_to_, recorded.seq);
@@ -152,7 +150,7 @@ void Recomputation::onRecordedGains(const GainSet& recorded) {
     return;
   }
   ++pairing_.foreign_gains;
-  controller_.onGains(recorded);
+  deliver(recorded);
 }
 
 bool Recomputation::solvedByReplay(const GainSet& recorded) const {
@@ -166,23 +164,29 @@ void Recomputation::judgeGainsHeardEarly(int64_t handed_over_seq) {
   auto judged = std::remove_if(gains_heard_early_.begin(), gains_heard_early_.end(), [&](const GainSet& g) {
     if (g.state_seq > handed_over_seq) return false;
     if (!solvedByReplay(g)) {
-          ++pairing_.foreign_gains;
-      controller_.onGains(g);
+      ++pairing_.foreign_gains;
+      deliver(g);
     }
     return true;
   });
   gains_heard_early_.erase(judged, gains_heard_early_.end());
 }
 
-// Refused by the bus's decode step: counted by the cores subscribed to the channel, as on the bus.
+// Refused by the bus's decode step: counted by the cores whose ports take the channel, as on the bus.
 void Recomputation::onUndecodable(const UndecodableInput& input) {
-  const Stream stream = input.stream;
-  if (stream == Stream::kImu || stream == Stream::kVioPose) {
-    estimator_.health().reject(stream, input.reason);
-    return;
-  }
-  if (stream == Stream::kStateEstimate || stream == Stream::kParams) gains_.health().reject(stream, input.reason);
-  controller_.health().reject(stream, input.reason);  // STATE_EST, GAINS, COMMAND, TRAJECTORY, PARAMS
+  std::apply([&](auto&... core) { (rejectIfTaken(core, input), ...); }, cores());
+}
+
+template <class Core>
+void Recomputation::rejectIfTaken(Core& core, const UndecodableInput& input) {
+  if (ports::takesStream<Core>(input.stream)) core.health().reject(input.stream, input.reason);
+}
+
+// A message every core whose ports take it receives as it was (the routing of the in-process
+// loop): the inputs no output of the flight names (IMU, VIO_POSE, PARAMS) and foreign messages.
+template <class Msg>
+void Recomputation::deliver(const Msg& m) {
+  std::apply([&](auto&... core) { (ports::deliver(core, m, outbox_), ...); }, cores());
 }
 
 // The solver first: a solve at this estimate can only use references of earlier ticks (the
@@ -392,11 +396,6 @@ void Recomputation::deliverTrajectoriesNamedBy(int64_t reference_seq) {
   }
   for (std::size_t k = 0; k < last; ++k) controller_.onTrajectory(flight_.trajectory[held_trajectories_[k]]);
   held_trajectories_.erase(held_trajectories_.begin(), held_trajectories_.begin() + static_cast<std::ptrdiff_t>(last));
-}
-
-void Recomputation::onParams(const ParamsUpdate& update) {
-  controller_.onParams(update);
-  gains_.onParams(update);
 }
 
 }  // namespace sdlqr::replay

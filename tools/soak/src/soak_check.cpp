@@ -87,7 +87,8 @@ bool SoakReport::passed() const {
 }
 
 SoakReport judgeGrowth(const std::vector<ResourceSample>& samples, const std::vector<LatencySample>& latency,
-                       double start, double end, const GrowthLimits& limits) {
+                       double start, double end, const GrowthLimits& limits,
+                       const std::vector<std::string>& expected) {
   if (!(limits.window_s > 0.0)) throw std::invalid_argument("window must be > 0 s");
   SoakReport report;
   for (double a = start; a + limits.window_s <= end + 1e-9; a += limits.window_s) {
@@ -99,6 +100,9 @@ SoakReport judgeGrowth(const std::vector<ResourceSample>& samples, const std::ve
   }
   const WindowFigures& ref = report.windows.front();
   const WindowFigures& last = report.windows.back();
+  for (const std::string& name : expected) {
+    if (find(ref, name) == nullptr) record(report, "sampled[" + name + "]@window 1", 1.0, 0.0);  // never judged
+  }
   for (const auto& p : ref.processes) {
     const double rss_limit = std::max(p.rss_max_kib * (1.0 + limits.rss_growth_fraction),
                                       p.rss_max_kib + limits.rss_growth_min_kib);

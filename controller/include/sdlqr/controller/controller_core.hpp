@@ -20,6 +20,7 @@
 #include "sdlqr/health/watchdog_report.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/ports.hpp"
 
 namespace sdlqr::controller {
 
@@ -37,6 +38,19 @@ class ControllerCore {
   // watchdog; a silent estimator means FAILSAFE (nothing is commanded, the lowlevel's RATE_CMD
   // timeout takes over).
   void onWallTime(double now_s);
+
+  // Ports (sdlqr/messages/ports.hpp). A tick that takes longer than the estimate period delays
+  // the next estimate's tick.
+  static constexpr auto inputs() {
+    return std::tuple{
+        ports::Input{&ControllerCore::onStateEstimate, 1, std::chrono::microseconds(4000)},
+        ports::Input{&ControllerCore::onGains, 4},
+        ports::Input{&ControllerCore::onCommand, 16},
+        ports::Input{&ControllerCore::onTrajectory, 2},
+        ports::Input{&ControllerCore::onParams, 16},
+    };
+  }
+  using Outputs = ports::Publishes<RateCommand, Reference>;
 
   ProcessHealth& health() { return health_; }
   const ProcessHealth& health() const { return health_; }

@@ -12,6 +12,7 @@
 #include "sdlqr/estimator/estimator.hpp"
 #include "sdlqr/health/process_health.hpp"
 #include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/ports.hpp"
 
 namespace sdlqr::estimator {
 
@@ -21,6 +22,18 @@ class EstimatorCore {
 
   RejectReason onImu(const ImuSample& sample, Outbox& out);
   RejectReason onVio(const VioPose& pose);
+
+  // Ports (sdlqr/messages/ports.hpp). Every IMU sample is integrated: 64 queued (64 ms at 1 kHz)
+  // ride out a descheduled process (a lost sample leaves a hole bridged only by interpolation);
+  // one handled slower than the IMU period is a missed deadline. Poses are few and each one is
+  // worth fusing, even late.
+  static constexpr auto inputs() {
+    return std::tuple{
+        ports::Input{&EstimatorCore::onImu, 64, std::chrono::microseconds(1000)},
+        ports::Input{&EstimatorCore::onVio, 4},
+    };
+  }
+  using Outputs = ports::Publishes<StateEstimate>;
 
   ProcessHealth& health() { return health_; }
   const ProcessHealth& health() const { return health_; }

@@ -19,6 +19,7 @@
 #include "sdlqr/health/watchdog_report.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/ports.hpp"
 
 namespace sdlqr::gains {
 
@@ -36,6 +37,17 @@ class GainsCore {
   RejectReason onParams(const ParamsUpdate& update);
   // Wall time [s]: STARTING before the first estimate, DEGRADED while STATE_EST is silent.
   void onWallTime(double now_s);
+
+  // Ports (sdlqr/messages/ports.hpp). A solve that outlasts the estimate period makes the next
+  // estimate wait (the 10 Hz schedule itself has 100 ms of room).
+  static constexpr auto inputs() {
+    return std::tuple{
+        ports::Input{&GainsCore::onStateEstimate, 1, std::chrono::microseconds(4000)},
+        ports::Input{&GainsCore::onReference},
+        ports::Input{&GainsCore::onParams, 16},
+    };
+  }
+  using Outputs = ports::Publishes<GainSet>;
 
   ProcessHealth& health() { return health_; }
   const ProcessHealth& health() const { return health_; }

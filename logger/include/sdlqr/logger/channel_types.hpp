@@ -1,6 +1,7 @@
 #pragma once
 // The one map from channel names to LCM message types (one type per channel) used by
-// the reader, the CSV export and the metrics. Names come from common/channels.hpp.
+// the reader, the CSV export and the metrics, from the channels of lcmtypes/*.lcm
+// (sdlqr/messages/channels.hpp).
 
 #include <string>
 #include <string_view>

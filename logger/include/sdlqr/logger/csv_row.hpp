@@ -28,27 +28,7 @@ void cell(CsvWriter& w, T value) {
   w.integer(static_cast<int64_t>(value));
 }
 
-// The integer fields of a row seen so far: the lengths of the variable-length arrays after them.
-// A decoded lcm-gen message's arrays may hold more than their length (a decode into a reused
-// message does not shrink them), so the length field, not the vector, says how many there are.
-class Lengths {
- public:
-  template <class T>
-  void note(const lcmtypes::FieldDescriptor& field, const T& value) {
-    if constexpr (std::is_integral_v<T>) values_.emplace_back(field.name, static_cast<int64_t>(value));
-  }
-  int64_t of(const lcmtypes::FieldDescriptor& field, int depth) const {
-    const lcmtypes::ArrayDimension& dim = field.dimensions[depth];
-    if (dim.size > 0) return dim.size;
-    for (const auto& [name, value] : values_) {
-      if (name == dim.length_field) return value;
-    }
-    return -1;
-  }
-
- private:
-  std::vector<std::pair<std::string_view, int64_t>> values_;
-};
+using Lengths = lcmtypes::ArrayLengths;
 
 // Writes the fields of one message as cells, field by field.
 class Writer {

@@ -19,19 +19,8 @@
 
 namespace sdlqr::logger {
 
-bool decodeMessage(const LogEvent& event, ImuSample* out);
-bool decodeMessage(const LogEvent& event, VioPose* out);
-bool decodeMessage(const LogEvent& event, StateEstimate* out);
-bool decodeMessage(const LogEvent& event, RateCommand* out);
-bool decodeMessage(const LogEvent& event, MotorCommand* out);
-bool decodeMessage(const LogEvent& event, GainSet* out);
-bool decodeMessage(const LogEvent& event, Reference* out);
-bool decodeMessage(const LogEvent& event, Trajectory* out);
-bool decodeMessage(const LogEvent& event, Disturbance* out);
-bool decodeMessage(const LogEvent& event, ParamsUpdate* out);
-bool decodeMessage(const LogEvent& event, Command* out);
-bool decodeMessage(const LogEvent& event, HeartbeatRecord* out);
-bool decodeMessage(const LogEvent& event, SimTruth* out);
-bool decodeMessage(const LogEvent& event, SimClockTick* out);
+// Defined for every message type with a channel (sdlqr/messages/channels.hpp ChannelTypes).
+template <class Plain>
+bool decodeMessage(const LogEvent& event, Plain* out);
 
 }  // namespace sdlqr::logger

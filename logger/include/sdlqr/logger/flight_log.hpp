@@ -19,6 +19,9 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "sdlqr/messages/messages.hpp"
@@ -53,6 +56,13 @@ struct Series {
   }
 };
 
+namespace detail {
+template <class T, class Tuple>
+struct TupleHas;
+template <class T, class... E>
+struct TupleHas<T, std::tuple<E...>> : std::bool_constant<(std::is_same_v<T, E> || ...)> {};
+}  // namespace detail
+
 struct FlightLog {
   std::string vehicle;
   LogFileStatus file;
@@ -71,6 +81,19 @@ struct FlightLog {
   Series<HeartbeatRecord> heartbeat;        // HEARTBEAT, all processes
   Series<SimTruth> sim_truth;               // SIM_TRUTH
   Series<SimClockTick> sim_clock;           // SIM_CLOCK
+
+  // Every series above, once: the loader decodes into them and recorders append by type.
+  auto allSeries() {
+    return std::tie(imu, vio_pose, state_estimate, rate_command, motor_command, gains, reference, trajectory,
+                    disturbance, params, command, heartbeat, sim_truth, sim_clock);
+  }
+  // Whether the log has a series of message type Msg, and that series.
+  template <class Msg>
+  static constexpr bool kRecords = detail::TupleHas<Series<Msg>&, decltype(std::declval<FlightLog&>().allSeries())>::value;
+  template <class Msg>
+  Series<Msg>& series() {
+    return std::get<Series<Msg>&>(allSeries());
+  }
 
   // Every channel in the log in order of first appearance. For the vehicle's channels the
   // decoded utime/seq are filled in; other channels carry event counts and receive times.

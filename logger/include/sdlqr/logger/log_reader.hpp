@@ -8,6 +8,7 @@
 // status() tells the caller what was readable.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -50,6 +51,22 @@ class LogReader {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   LogFileStatus status_;
+};
+
+// For a tool that needs at least one event: reads the first into *event; throws LogError naming
+// the log when it holds none (an empty file, or not an LCM event log).
+void readFirstEvent(LogReader& reader, LogEvent* event);
+
+// Calls report(percent, events) each time another 10 % of the log's bytes has been read.
+class ReadProgress {
+ public:
+  using Report = std::function<void(int percent, int64_t events)>;
+  explicit ReadProgress(Report report) : report_(std::move(report)) {}
+  void update(const LogReader& reader);
+
+ private:
+  Report report_;
+  int next_percent_ = 10;
 };
 
 }  // namespace sdlqr::logger

@@ -26,7 +26,8 @@ RecordCommand parseRecordCommand(int argc, const char* const* argv);
 // (1 when anything could not be written).
 int reportRecording(const RecorderStats& stats, const std::string& path);
 
-// `export LOG --out DIR`: CSV per channel + metrics.json. Returns the exit code.
+// `export LOG --out DIR`: CSV per channel + metrics.json; `--mcap FILE`: the log as MCAP
+// (mcap_export.hpp). Returns the exit code.
 int runExportCommand(int argc, const char* const* argv);
 
 }  // namespace sdlqr::logger

@@ -19,6 +19,7 @@
 #include "sdlqr/health/watchdog_report.hpp"
 #include "sdlqr/lowlevel/bodyrate_loop.hpp"
 #include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/ports.hpp"
 
 namespace sdlqr::lowlevel {
 
@@ -35,6 +36,17 @@ class LowlevelCore {
   // Wall time [s]: without IMU samples nothing can be computed or sent (FAILSAFE); the RATE_CMD
   // age is judged by the loop in IMU time (its failsafe) and mirrored here on wall time.
   void onWallTime(double now_s);
+
+  // Ports (sdlqr/messages/ports.hpp). A step longer than the IMU period is a missed deadline.
+  static constexpr auto inputs() {
+    return std::tuple{
+        ports::Input{&LowlevelCore::onImu, 64, std::chrono::microseconds(1000)},
+        ports::Input{&LowlevelCore::onRateCommand, 1},
+        ports::Input{&LowlevelCore::onCommand, 16},
+        ports::Input{&LowlevelCore::onParams, 16},
+    };
+  }
+  using Outputs = ports::Publishes<MotorCommand>;
 
   ProcessHealth& health() { return health_; }
   const ProcessHealth& health() const { return health_; }

@@ -1,9 +1,9 @@
 #pragma once
 // The mission process, bus-free: plays a scenario's events against the simulation clock and
-// re-sends the current setpoint command. Which stream provides the clock is the caller's
-// binding (onClock takes a utime); the in-process loop drives the same object.
+// re-sends the current setpoint command. SIM_CLOCK's utime is the clock; the in-process loop
+// drives the same object.
 //
-//   onClock(utime)   a newer clock plays every event due (COMMAND, DISTURBANCE, PARAMS,
+//   onClock(clock)   a newer clock plays every event due (COMMAND, DISTURBANCE, PARAMS,
 //                    TRAJECTORY through the Outbox, each stamped with the clock and its own
 //                    channel's seq) and the due re-send; a clock not after the last is ignored
 //   onWallTime(now)  the clock watchdog: no newer clock for no_clock_timeout_s -> clockLost()
@@ -18,6 +18,7 @@
 #include "sdlqr/health/process_health.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/ports.hpp"
 #include "sdlqr/mission/command_resender.hpp"
 #include "sdlqr/mission/mission_player.hpp"
 #include "sdlqr/mission/scenario.hpp"
@@ -37,11 +38,21 @@ class MissionCore {
   MissionCore(const Scenario& scenario, const trajectory::TrajectoryParams& trajectory, const LqrParams& lqr,
               const MissionOptions& options);
 
-  void onClock(int64_t utime, Outbox& out);
+  void onClock(const SimClockTick& clock, Outbox& out);
   void onWallTime(double now_s);
   void onStateEstimate(const StateEstimate& estimate, Outbox& out);
   // Whether the bus main needs STATE_EST at all.
   bool watchesEstimates() const { return throw_detector_.has_value(); }
+
+  // Ports (sdlqr/messages/ports.hpp). STATE_EST in throw mode only: every estimate counts for
+  // the detector's acceleration, so a short queue.
+  static constexpr auto inputs() {
+    return std::tuple{
+        ports::Input{&MissionCore::onClock},
+        ports::Input{&MissionCore::onStateEstimate, 8}.onlyWhen(&MissionCore::watchesEstimates),
+    };
+  }
+  using Outputs = ports::Publishes<Command, Trajectory, Disturbance, ParamsUpdate>;
   const std::optional<ThrowDetector>& throwDetector() const { return throw_detector_; }
 
   bool finished() const { return now_utime_ >= 0 && player_.finished(now_utime_); }

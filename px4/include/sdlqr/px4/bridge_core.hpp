@@ -34,10 +34,12 @@
 #include <array>
 #include <cstdint>
 #include <optional>
+#include <tuple>
 
 #include "sdlqr/health/process_health.hpp"
 #include "sdlqr/health/validate.hpp"
 #include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/ports.hpp"
 #include "sdlqr/px4/bridge_params.hpp"
 #include "sdlqr/px4/command_sender.hpp"
 #include "sdlqr/px4/mavlink_endpoint.hpp"
@@ -84,11 +86,20 @@ class BridgeCore {
   BridgeCore(const BridgeParams& params, double gravity, const ValidationLimits& limits, MavlinkEndpoint& link,
              BridgeOptions options = {});
 
-  // Bytes from the link (`datagram`: one whole UDP datagram).
+  // Bytes from the link (`datagram`: one whole UDP datagram); what they carry goes to `bus`.
   void onBytes(const uint8_t* data, size_t size, bool datagram, Outbox& bus);
   RejectReason onRateCommand(const RateCommand& command);
   RejectReason onCommand(const Command& command);
   void onWallTime(double now_s);
+
+  // The bus side (sdlqr/messages/ports.hpp); the MAVLink side is onBytes and the link it was given.
+  static constexpr auto inputs() {
+    return std::tuple{
+        ports::Input{&BridgeCore::onRateCommand, 1},
+        ports::Input{&BridgeCore::onCommand, 16},
+    };
+  }
+  using Outputs = ports::Publishes<StateEstimate, SimClockTick, ImuSample>;
 
   ProcessHealth& health() { return health_; }
   const ProcessHealth& health() const { return health_; }

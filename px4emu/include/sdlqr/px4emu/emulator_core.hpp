@@ -23,6 +23,7 @@
 // What it does not emulate is listed in docs/px4.md.
 
 #include <optional>
+#include <tuple>
 
 #include "sdlqr/estimator/estimator_core.hpp"
 #include "sdlqr/estimator/estimator_params.hpp"
@@ -30,7 +31,9 @@
 #include "sdlqr/health/watchdog.hpp"
 #include "sdlqr/lowlevel/lowlevel_core.hpp"
 #include "sdlqr/math/lqr_params.hpp"
+#include "sdlqr/messages/in_process_wiring.hpp"
 #include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/ports.hpp"
 #include "sdlqr/px4/mavlink_endpoint.hpp"
 #include "sdlqr/px4/thrust_map.hpp"
 #include "sdlqr/px4emu/commander.hpp"
@@ -54,8 +57,10 @@ struct EmulatorConfig {
 };
 
 class EmulatorCore;
-// The wiring inside the emulated vehicle: each message the inner cores publish to its consumer.
-struct InnerWiring {
+// What the emulator itself takes of the messages inside the vehicle (InProcessWiring's observer,
+// shown each one before the inner cores): the newest IMU sample and estimate for its streams, the
+// truth and the motor commands for the bus.
+struct InnerObserver {
   EmulatorCore* core;
   template <class Message>
   void operator()(const Message& m) const;
@@ -81,14 +86,18 @@ class EmulatorCore {
   uint8_t landedState() const;
   double hoverThrottle() const { return airframe_.hover_throttle; }
 
-  // The inner wiring (InnerWiring): not for callers.
-  void route(const ImuSample& m);
-  void route(const VioPose& m);
-  void route(const SimTruth& m);
-  void route(const StateEstimate& m);
-  void route(const MotorCommand& m);
+  // The bus side (sdlqr/messages/ports.hpp); the MAVLink side is onBytes and the link it was given.
+  // SIM_CLOCK stays inside: the companion's bridge owns the scenario's clock (from ODOMETRY).
+  static constexpr auto inputs() { return std::tuple{ports::Input{&EmulatorCore::onDisturbance, 16}}; }
+  using Outputs = ports::Publishes<SimTruth, MotorCommand>;
+
+  // The inner observer (InnerObserver): not for callers.
+  void observe(const ImuSample& m) { imu_ = m; }
+  void observe(const StateEstimate& m) { estimate_ = m; }
+  void observe(const SimTruth& m) { bus_->publish(m); }
+  void observe(const MotorCommand& m) { bus_->publish(m); }
   template <class Message>
-  void route(const Message&) {}  // SIM_CLOCK: the companion's bridge owns the scenario clock
+  void observe(const Message&) {}
 
  private:
   template <class Message>
@@ -116,10 +125,13 @@ class EmulatorCore {
   EmulatorConfig config_;
   px4::MavlinkEndpoint& link_;
   px4::ThrustMap airframe_;  // PX4's normalized thrust -> the bodyrate loop's c [m/s^2]
-  OutboxTo<InnerWiring> inner_;
   sim::SimCore sim_;
   estimator::EstimatorCore estimator_;
   lowlevel::LowlevelCore lowlevel_;
+  // Inside the vehicle, each message reaches the cores whose ports take it, as on the bus: the
+  // bodyrate loop acts on an IMU sample before the estimator, the plant takes the motor commands.
+  InnerObserver observer_{this};
+  InProcessWiring<InnerObserver, lowlevel::LowlevelCore, estimator::EstimatorCore, sim::SimCore> inner_;
   Commander commander_;
   Streams streams_;
   LandDetector land_detector_;
@@ -145,8 +157,8 @@ class EmulatorCore {
 };
 
 template <class Message>
-void InnerWiring::operator()(const Message& m) const {
-  core->route(m);
+void InnerObserver::operator()(const Message& m) const {
+  core->observe(m);
 }
 
 }  // namespace sdlqr::px4emu

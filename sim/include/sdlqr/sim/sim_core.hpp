@@ -15,6 +15,7 @@
 #include "sdlqr/health/process_health.hpp"
 #include "sdlqr/health/validate.hpp"
 #include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/ports.hpp"
 #include "sdlqr/sim/simulator.hpp"
 
 namespace sdlqr::sim {
@@ -32,6 +33,18 @@ class SimCore {
   // IMU would cost it ten times the wake-ups). Returns true on the step the vehicle crashed
   // (reported once).
   bool step(Outbox& out);
+
+  // Ports (sdlqr/messages/ports.hpp). Every motor command is checked and counted, the newest
+  // applies: a queue of one kept the oldest of each batch the bus read and dropped the rest
+  // (Node::drainInbox), 11,315 of a 52 s flight on a busy machine, among them a hostile NaN
+  // command the sim never judged. Every disturbance request matters: they queue, not replace.
+  static constexpr auto inputs() {
+    return std::tuple{
+        ports::Input{&SimCore::onMotorCommand, 8},
+        ports::Input{&SimCore::onDisturbance, 16},
+    };
+  }
+  using Outputs = ports::Publishes<SimTruth, VioPose, ImuSample, SimClockTick>;
 
   ProcessHealth& health() { return health_; }
   const ProcessHealth& health() const { return health_; }

@@ -85,6 +85,9 @@ struct SimStress {
   static const ParamTable<SimStress>& declaration();
   // Reads the scenario's `sim` mapping; throws ConfigError naming the key ("sim.wind.gust_std[1]").
   static SimStress load(const ConfigReader& sim) { return declaration().load(sim); }
+  // The `sim` mapping of a scenario file (the simulator reads no other part of it: the scenario's
+  // events are the mission's, which checks the whole file).
+  static SimStress loadFromScenario(const std::string& scenario_path);
   std::string invalidReason() const { return declaration().invalidReason(*this); }
 };
 

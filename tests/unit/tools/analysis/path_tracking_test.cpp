@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <tuple>
 
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/analysis/path_tracking.hpp"
@@ -76,11 +77,11 @@ void addTrajectory(logger::FlightLog& log, const Trajectory& trajectory) {
 }
 
 // The reference on segment (i-1, i) of a 0.1 s sampled trajectory at trajectory time tau.
-void referenceAt(logger::FlightLog& log, double t, double tau, int samples, ReferenceMode mode) {
+void referenceAt(logger::FlightLog& log, double t, double tau, int samples, ReferenceMode mode, int64_t seq = 3) {
   const double k = std::min(tau / 0.1, static_cast<double>(samples - 1));
   int index = std::max(1, static_cast<int>(std::ceil(k - 1e-9)));
   index = std::min(index, samples - 1);
-  addReference(log, t, index, std::clamp(k - (index - 1), 0.0, 1.0), mode);
+  addReference(log, t, index, std::clamp(k - (index - 1), 0.0, 1.0), mode, seq);
 }
 
 TEST(PathGeometry, ClosestPointOnThePolyline) {
@@ -286,12 +287,15 @@ TEST(PathTracking, UntrackedTrajectoryIsNotReported) {
   EXPECT_TRUE(analysis::analyzePathTracking(log).empty());
 }
 
-mission::Scenario heldPathScenario(std::map<std::string, double> criteria) {
+// The trajectory flown at 10 s (flyHeldAtCorner), tracked as `mode`.
+mission::Scenario heldPathScenario(std::map<std::string, double> criteria, ReferenceMode mode = ReferenceMode::kSpatial) {
   mission::Scenario s;
   s.name = "synthetic";
   s.criteria = std::move(criteria);
   mission::ScenarioEvent e;
+  e.at = 10.0;
   e.kind = mission::ScenarioEvent::Kind::kTrajectory;
+  e.trajectory.tracking = mode;
   e.label = "held";
   s.events.push_back(e);
   return s;
@@ -309,12 +313,13 @@ TEST(PathTrackingCriteria, ChecksFollowTheScenario) {
   ASSERT_EQ(a.trajectories.size(), 1u);
   EXPECT_EQ(a.trajectories[0].label, "held");
   // The same criteria fail the temporal flight on its skipped samples.
-  const auto b = analysis::analyzeFlight(temporal.log, heldPathScenario(spatial_criteria));
+  const auto b = analysis::analyzeFlight(temporal.log, heldPathScenario(spatial_criteria, ReferenceMode::kTemporal));
   EXPECT_FALSE(b.passed());
   bool skip_check_failed = false;
   for (const auto& c : b.checks) skip_check_failed |= (c.name == "skipped_samples_max[held]" && !c.pass);
   EXPECT_TRUE(skip_check_failed);
-  const auto c = analysis::analyzeFlight(temporal.log, heldPathScenario({{"skip_radius", 0.25}, {"skipped_samples_min", 1}}));
+  const auto c = analysis::analyzeFlight(
+      temporal.log, heldPathScenario({{"skip_radius", 0.25}, {"skipped_samples_min", 1}}, ReferenceMode::kTemporal));
   EXPECT_TRUE(c.passed());
   // A criterion about trajectories in a flight without one fails instead of passing vacuously.
   logger::FlightLog empty;
@@ -327,6 +332,44 @@ TEST(PathTrackingCriteria, ChecksFollowTheScenario) {
   options.path.thrust_min = 2.0;
   options.path.thrust_max = 18.0;
   EXPECT_NO_THROW(analysis::analyzeFlight(spatial.log, heldPathScenario({{"thrust_limit_violations_max", 0}}), options));
+}
+
+// A repeating mission (the soak's: a lap every 33 s) is judged lap by lap, each by its own event:
+// a lap flown 20 cm off its path fails by its name, the good one beside it passes.
+TEST(PathTrackingCriteria, EveryLapOfARepeatingMissionIsJudgedAndABadOneFailsByName) {
+  logger::FlightLog log;
+  mission::Scenario scenario;
+  scenario.criteria = {{"path_error_rms", 0.1}, {"trajectory_completed", 1}};
+  for (const auto& [start, seq, offset] : {std::tuple<double, int64_t, double>{10.0, 0, 0.0}, {30.0, 1, 0.2}}) {
+    Trajectory lap = makeTrajectory(lPath, 4.0, 0.1, ReferenceMode::kSpatial);
+    lap.seq = seq;
+    lap.utime = lap.start_utime = micros(start);
+    addTrajectory(log, lap);
+    mission::ScenarioEvent e;
+    e.at = start;
+    e.kind = mission::ScenarioEvent::Kind::kTrajectory;
+    e.label = "lap @" + std::to_string(static_cast<int>(start));
+    scenario.events.push_back(e);
+    for (int i = 0; i <= 500; ++i) {
+      const double tau = i * 0.01, along = std::min(tau, 4.0);
+      addTruth(log, start + tau, lPath(along) + Vec3(0.0, 0.0, offset));
+      if (i % 2 == 0) referenceAt(log, start + tau, along, 41, ReferenceMode::kSpatial, seq);
+    }
+  }
+  const analysis::FlightReport report = analysis::analyzeFlight(log, scenario);
+  ASSERT_EQ(report.trajectories.size(), 2u);
+  const analysis::Check* good = nullptr;
+  const analysis::Check* bad = nullptr;
+  for (const analysis::Check& c : report.checks) {
+    if (c.name == "path_error_rms[lap @10]") good = &c;
+    if (c.name == "path_error_rms[lap @30]") bad = &c;
+  }
+  ASSERT_NE(good, nullptr);
+  ASSERT_NE(bad, nullptr);
+  EXPECT_TRUE(good->pass);
+  EXPECT_FALSE(bad->pass);
+  EXPECT_NEAR(bad->value, 0.2, 1e-9);
+  EXPECT_FALSE(report.passed());
 }
 
 }  // namespace

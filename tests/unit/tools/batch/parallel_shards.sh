@@ -20,9 +20,11 @@ for file in flights.csv summary.txt batch.yaml; do
 done
 rows=$(($(wc -l <"$work/merged/flights.csv") - 1))
 [ "$rows" -eq 20 ] || { echo "expected 20 rows, merged $rows" >&2; exit 1; }
-# Negative: a merge missing a shard is refused.
-if "$batch" merge "$spec" --out "$work/incomplete" "$work"/shard-{1,2,3} 2>/dev/null; then
-  echo "a merge of 3 of 4 shards was accepted" >&2
+# Negative: a merge missing a shard is refused, naming it (exit 1).
+status=0
+refusal="$("$batch" merge "$spec" --out "$work/incomplete" "$work"/shard-{1,2,3} 2>&1)" || status=$?
+if [ "$status" -ne 1 ] || ! grep -q "shard 4/4 missing" <<<"$refusal"; then
+  echo "a merge of 3 of 4 shards: exit $status, expected 1 naming shard 4/4: $refusal" >&2
   exit 1
 fi
 echo "4 shards through GNU parallel merged into the single run's $rows rows, bit for bit"

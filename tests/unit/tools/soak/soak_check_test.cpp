@@ -1,6 +1,6 @@
 // The soak judge on synthetic series: a flat run passes, and each kind of growth — a leak, a
-// descriptor leak, CPU creeping up, latency growing, a process vanishing, a gap in the log —
-// fails it.
+// descriptor leak, CPU creeping up, latency growing, a process vanishing or never sampled, a gap
+// in the log — fails it.
 
 #include <gtest/gtest.h>
 
@@ -80,6 +80,21 @@ TEST(SoakCheck, AProcessThatVanishesFails) {
     if (s.process != "sdlqr-sim" || s.t < 300.0) samples.push_back(s);
   }
   EXPECT_TRUE(failed(judgeGrowth(samples, latency(), 0.0, 600.0, GrowthLimits{}), "sampled[sdlqr-sim]"));
+}
+
+// Growth is judged only for processes that were sampled: a process the launcher started that has
+// no samples at all (or an empty series) fails, named, instead of leaving its memory unjudged.
+TEST(SoakCheck, AStartedProcessWithoutSamplesFails) {
+  const std::vector<std::string> started = {"sdlqr-controller", "sdlqr-sim", "sdlqr-logger"};
+  const SoakReport r = judgeGrowth(run(0.0), latency(), 0.0, 600.0, GrowthLimits{}, started);
+  EXPECT_FALSE(r.passed());
+  EXPECT_TRUE(failed(r, "sampled[sdlqr-logger]@window 1"));
+  EXPECT_FALSE(failed(r, "sampled[sdlqr-controller]"));
+  EXPECT_TRUE(judgeGrowth(run(0.0), latency(), 0.0, 600.0, GrowthLimits{}, {"sdlqr-controller", "sdlqr-sim"}).passed());
+  // No sample at all: every started process fails, none passes by being absent.
+  const SoakReport empty = judgeGrowth({}, latency(), 0.0, 600.0, GrowthLimits{}, started);
+  EXPECT_FALSE(empty.passed());
+  for (const std::string& name : started) EXPECT_TRUE(failed(empty, "sampled[" + name + "]")) << name;
 }
 
 TEST(SoakCheck, FewerThanTwoWindowsIsAnError) {

@@ -1,7 +1,7 @@
 #pragma once
 // Which LCM URL each channel travels on: one URL for everything (single), or the high-rate
-// channels on ports of their own above the --lcm-url port (split; the table is kSplitPorts in
-// sdlqr/messages/channels.hpp). Pure functions of the URL text, for Node and the tools that
+// channels on ports of their own above the --lcm-url port (split; each channel's @split_port in
+// its .lcm file, kChannels in sdlqr/messages/channels.hpp). Pure functions of the URL text, for Node and the tools that
 // must hear every channel (recorder, sdlqr-top, the spy bridge).
 
 #include <string>

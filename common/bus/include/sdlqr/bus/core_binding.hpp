@@ -1,17 +1,17 @@
 #pragma once
 // The adapter between the bus and a process core (the core's library holds every gate, counter
-// and algorithm; see e.g. controller/controller_core.hpp). One line per channel:
+// and algorithm; see e.g. controller/controller_core.hpp). The core declares its ports once
+// (sdlqr/messages/ports.hpp); binding subscribes every input port on the channel of its type,
+// with the port's queue and deadline, and publishes what the core puts in its Outbox:
 //
 //   controller::ControllerCore core(...);
 //   bus::Node node("sdlqr-controller", options, core.health());   // HEARTBEAT from the core
-//   bus::CoreBinding<controller::ControllerCore> bus(node, core);
-//   bus.bind(&ControllerCore::onStateEstimate, 1, kTickBudget);    // STATE_EST -> method
-//   bus.bind(&ControllerCore::onGains, 4);
+//   bus::CoreBinding<controller::ControllerCore> bus(node, core);  // every port of inputs()
 //   bus.serve(spin_ms);                                           // spin, feed wall time
 //
-// The channel follows from the message type (one type per channel); the byte-level stage (size
-// walk, decode) is the Node's; the wall time is fed to the core's onWallTime(now) before every
-// message and after every spin, so a stream's watchdog is fed with the time of its message.
+// The byte-level stage (size walk, decode) is the Node's; the wall time is fed to the core's
+// onWallTime(now) before every message and after every spin, so a stream's watchdog is fed with
+// the time of its message.
 
 #include <chrono>
 #include <string_view>
@@ -23,27 +23,11 @@
 #include "sdlqr/bus/node.hpp"
 #include "sdlqr/bus/wall_clock.hpp"
 #include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/ports.hpp"
 
 namespace sdlqr::bus {
 
-// The channel of each plain message type.
-constexpr std::string_view channelOf(const ImuSample*) { return channel::kImu; }
-constexpr std::string_view channelOf(const VioPose*) { return channel::kVioPose; }
-constexpr std::string_view channelOf(const SimTruth*) { return channel::kSimTruth; }
-constexpr std::string_view channelOf(const StateEstimate*) { return channel::kStateEstimate; }
-constexpr std::string_view channelOf(const GainSet*) { return channel::kGains; }
-constexpr std::string_view channelOf(const RateCommand*) { return channel::kRateCommand; }
-constexpr std::string_view channelOf(const Reference*) { return channel::kReference; }
-constexpr std::string_view channelOf(const MotorCommand*) { return channel::kMotorCommand; }
-constexpr std::string_view channelOf(const Command*) { return channel::kCommand; }
-constexpr std::string_view channelOf(const Disturbance*) { return channel::kDisturbance; }
-constexpr std::string_view channelOf(const ParamsUpdate*) { return channel::kParams; }
-constexpr std::string_view channelOf(const Trajectory*) { return channel::kTrajectory; }
-constexpr std::string_view channelOf(const SimClockTick*) { return channel::kSimClock; }
-template <class Msg>
-constexpr std::string_view channelOf() {
-  return channelOf(static_cast<const Msg*>(nullptr));
-}
+using ::sdlqr::channelOf;
 
 // Publishes each message on the channel of its type.
 struct PublishOnItsChannel {
@@ -53,6 +37,7 @@ struct PublishOnItsChannel {
     node->publish(channelOf<Msg>(), toLcm(m));
   }
 };
+// Publishes any message on its channel (a process that is no core, e.g. a test peer).
 class NodeOutbox final : public OutboxTo<PublishOnItsChannel> {
  public:
   explicit NodeOutbox(Node& node) : OutboxTo<PublishOnItsChannel>(PublishOnItsChannel{&node}) {}
@@ -61,25 +46,11 @@ class NodeOutbox final : public OutboxTo<PublishOnItsChannel> {
 template <class Core>
 class CoreBinding {
  public:
-  CoreBinding(Node& node, Core& core) : node_(node), core_(core), outbox_(node) {}
-
-  // A method that publishes: RejectReason Core::onX(const Msg&, Outbox&).
-  template <class R, class Msg>
-  void bind(R (Core::*method)(const Msg&, Outbox&), int queue_capacity = 1,
-            std::chrono::microseconds budget = std::chrono::microseconds::zero()) {
-    node_.subscribe<LcmOf<Msg>>(channelOf<Msg>(), [this, method](const LcmOf<Msg>& m) {
-      feedWallTime();
-      (core_.*method)(fromLcm(m), outbox_);
-    }, queue_capacity, budget);
-  }
-  // A method that only takes input: RejectReason Core::onX(const Msg&).
-  template <class R, class Msg>
-  void bind(R (Core::*method)(const Msg&), int queue_capacity = 1,
-            std::chrono::microseconds budget = std::chrono::microseconds::zero()) {
-    node_.subscribe<LcmOf<Msg>>(channelOf<Msg>(), [this, method](const LcmOf<Msg>& m) {
-      feedWallTime();
-      (core_.*method)(fromLcm(m));
-    }, queue_capacity, budget);
+  // Subscribes every input port of Core::inputs() that is active for `core`.
+  CoreBinding(Node& node, Core& core) : node_(node), core_(core), outbox_(PublishOnItsChannel{&node}) {
+    ports::forEachInput<Core>([this](const auto& port) {
+      if (port.active(core_)) bind(port);
+    });
   }
 
   // Spins until SIGINT/SIGTERM, feeding wall time after every spin; then the last heartbeat.
@@ -92,18 +63,20 @@ class CoreBinding {
   Node& node() { return node_; }
 
  private:
-  template <class C, class = void>
-  struct HasWallTime : std::false_type {};
-  template <class C>
-  struct HasWallTime<C, std::void_t<decltype(std::declval<C&>().onWallTime(0.0))>> : std::true_type {};
-
-  void feedWallTime() {
-    if constexpr (HasWallTime<Core>::value) core_.onWallTime(monotonicSeconds());
+  template <class Port>
+  void bind(const Port& port) {
+    using Msg = typename Port::Msg;
+    node_.subscribe<LcmOf<Msg>>(channelOf<Msg>(), [this, port](const LcmOf<Msg>& m) {
+      feedWallTime();
+      port.deliver(core_, fromLcm(m), outbox_);
+    }, port.queue(), port.budget());
   }
+
+  void feedWallTime() { ports::feedWallTime(core_, monotonicSeconds()); }
 
   Node& node_;
   Core& core_;
-  NodeOutbox outbox_;
+  ports::CoreOutbox<Core, PublishOnItsChannel> outbox_;
 };
 
 }  // namespace sdlqr::bus

@@ -110,6 +110,11 @@ class Node {
   // whoever it hears). Counted as published.
   void forwardEncoded(const std::string& channel, const void* data, int size);
 
+  // From now on the node never publishes: no HEARTBEAT, and a publish is refused (counted as an
+  // error). For a listener that must not add traffic to the bus it watches (sdlqr-view).
+  void listenOnly() { listen_only_ = true; }
+  bool isListenOnly() const { return listen_only_; }
+
   // Replaces the fault injection read from SDLQR_FAULTS at construction (tests over memq://).
   void setFaultInjection(const FaultInjection& faults);
   const FaultInjection& faultInjection() const { return faults_; }
@@ -295,6 +300,7 @@ class Node {
   Counters::Id bus_kernel_dropped_ = -1;
   int64_t received_ = 0;
   int64_t published_ = 0;
+  bool listen_only_ = false;
   int64_t heartbeat_seq_ = 0;
   std::chrono::steady_clock::time_point next_heartbeat_;
   std::chrono::steady_clock::time_point cpu_window_start_;
@@ -324,5 +330,10 @@ void Node::publish(std::string_view base, const T& msg) {
   const PublishChannel& target = publishChannel(base);
   publishFrame(*target.lcm, target.full, encode_buffer_.data(), size);
 }
+
+// The stop flag every Node checks, set by SIGINT or SIGTERM once a Node exists or
+// installStopSignalHandlers() ran: for a main that runs without a bus (sdlqr-view playing a log).
+void installStopSignalHandlers();
+bool stopRequested();
 
 }  // namespace sdlqr::bus

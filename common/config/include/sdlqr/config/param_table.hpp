@@ -15,9 +15,13 @@
 //
 // Rules that tie keys together (c_max > c_min) are explicit check()s on the table, each naming the
 // key it blames. Ranges are checked first, in declaration order, then the checks in theirs.
+// A key that a PARAMS update may change in flight says so after its declaration:
+// `.inFlight(ParamsUpdate::kLimits)` (its group); sdlqr/math/in_flight.hpp derives the rest.
 
 #include <array>
+#include <cstdint>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -45,6 +49,15 @@ struct ParamInfo {
   std::string help;
   std::string default_text;          // the default as the vehicle file spells it
   bool derived = false;              // when absent, follows from other keys (printed commented out)
+  int32_t in_flight = 0;             // the PARAMS group that changes it in flight; 0: fixed for a flight
+  std::vector<double> choice_values; // a choice: the enum value of each word (as a number)
+};
+
+// A parameter's value as numbers: a number one, a list its elements, a choice its enum's value.
+inline constexpr int kMaxParamValues = 16;
+struct ParamValues {
+  std::array<double, kMaxParamValues> v{};
+  int size = 0;
 };
 
 // The struct-independent face of a declaration: what the vehicle-file registry, the printer and
@@ -105,6 +118,8 @@ class ParamTable final : public ParamSection {
       return range.contains(p.*member) ? std::string() : key + ": " + range.rule(unit);
     };
     f.text = [member](const T& p) { return yamlNumber(p.*member); };
+    f.get = [member](const T& p) { return ParamValues{{p.*member}, 1}; };
+    f.set = [member](T& p, const ParamValues& v) { p.*member = v.v[0]; };
     return *this;
   }
 
@@ -143,7 +158,10 @@ class ParamTable final : public ParamSection {
   ParamTable& choice(const char* key, E T::*member, typename detail::Same<E>::type value,
                      std::vector<std::pair<std::string, E>> names, const char* help) {
     Field& f = add(key, ParamKind::kChoice, "-", Range::finite(), help);
-    for (const auto& entry : names) f.info.choices.push_back(entry.first);
+    for (const auto& entry : names) {
+      f.info.choices.push_back(entry.first);
+      f.info.choice_values.push_back(static_cast<double>(static_cast<int64_t>(entry.second)));
+    }
     f.set_default = [member, value](T& p) { p.*member = value; };
     f.read = [member, names, key = f.info.key, words = f.info.choices](const ConfigReader& r, T& p) {
       if (!r.has(key)) return;
@@ -169,6 +187,8 @@ class ParamTable final : public ParamSection {
       }
       return std::string("?");
     };
+    f.get = [member](const T& p) { return ParamValues{{static_cast<double>(static_cast<int64_t>(p.*member))}, 1}; };
+    f.set = [member](T& p, const ParamValues& v) { p.*member = static_cast<E>(static_cast<int64_t>(v.v[0])); };
     return *this;
   }
 
@@ -184,6 +204,16 @@ class ParamTable final : public ParamSection {
       return detail::elementReason<N>(key, p.*member, range, unit);
     };
     f.text = [member](const T& p) { return detail::listText<N>(p.*member); };
+    static_assert(N <= kMaxParamValues, "a list longer than ParamValues holds");
+    f.get = [member](const T& p) {
+      ParamValues out;
+      out.size = N;
+      for (int i = 0; i < N; ++i) out.v[static_cast<size_t>(i)] = (p.*member)[i];
+      return out;
+    };
+    f.set = [member](T& p, const ParamValues& v) {
+      for (int i = 0; i < N && i < v.size; ++i) (p.*member)[i] = v.v[static_cast<size_t>(i)];
+    };
     return *this;
   }
 
@@ -241,6 +271,33 @@ class ParamTable final : public ParamSection {
     return *this;
   }
 
+  // The key declared last may change in flight, through the PARAMS group `group` (a number, a
+  // list or a choice: what a ParamsUpdate field can carry).
+  ParamTable& inFlight(int32_t group) {
+    Field& f = fields_.back();
+    if (!f.get || !f.set) throw std::logic_error(f.info.key + ": only a number, a list or a choice may change in flight");
+    f.info.in_flight = group;
+    return *this;
+  }
+  // f(info) for every key declared in flight, in declaration order.
+  template <class F>
+  void forEachInFlight(F&& f) const {
+    for (const Field& field : fields_) {
+      if (field.info.in_flight != 0) f(field.info);
+    }
+  }
+  const ParamInfo& info(const std::string& key) const {
+    for (const Field& f : fields_) {
+      if (f.info.key == key) return f.info;
+    }
+    throw std::logic_error("no key '" + key + "' in this table");
+  }
+  // The value of an in-flight key (a number, a list or a choice) as numbers, and setting it.
+  ParamValues values(const T& p, const std::string& key) const { return field(key).get(p); }
+  void setValues(T& p, const std::string& key, const ParamValues& v) const { field(key).set(p, v); }
+  // Reads one key as load() would (no range check).
+  void readKey(const ConfigReader& reader, const std::string& key, T& p) const { field(key).read(reader, p); }
+
   // A rule across keys: when `ok` is false, `key` is reported with `reason`.
   ParamTable& check(const char* key, std::function<bool(const T&)> ok, std::string reason) {
     checks_.push_back({key, std::move(ok), std::move(reason)});
@@ -264,6 +321,15 @@ class ParamTable final : public ParamSection {
     }
     for (const Check& c : checks_) {
       if (!c.ok(p)) return c.key + ": " + c.reason;
+    }
+    return {};
+  }
+  // The rules that blame a key declared in flight (c_max > c_min), in declaration order: what a
+  // PARAMS update is checked against. Such a rule reads only keys of its key's group, which the
+  // update carries; a rule blaming a fixed key (max_rotor_thrust lifts the mass) is the owner's.
+  std::string inFlightRulesReason(const T& p) const {
+    for (const Check& c : checks_) {
+      if (inFlightKey(c.key) && !c.ok(p)) return c.key + ": " + c.reason;
     }
     return {};
   }
@@ -322,6 +388,8 @@ class ParamTable final : public ParamSection {
     std::function<std::string(const T&)> reason;  // empty function: nothing to check
     std::function<std::string(const T&)> text;
     std::function<bool(const T&)> follows;        // derived lists: equal to what they follow to
+    std::function<ParamValues(const T&)> get;     // a number, a list or a choice: its value as numbers
+    std::function<void(T&, const ParamValues&)> set;
     std::string placeholder;                      // derived lists: printed while they follow
     std::function<void(const T&, YamlWriter&)> print_nested;
     const ParamSection* nested = nullptr;
@@ -331,6 +399,20 @@ class ParamTable final : public ParamSection {
     std::function<bool(const T&)> ok;
     std::string reason;
   };
+
+  bool inFlightKey(const std::string& key) const {
+    for (const Field& f : fields_) {
+      if (f.info.key == key) return f.info.in_flight != 0;
+    }
+    return false;
+  }
+
+  const Field& field(const std::string& key) const {
+    for (const Field& f : fields_) {
+      if (f.info.key == key && f.get) return f;
+    }
+    throw std::logic_error("no number, list or choice '" + key + "' in this table");
+  }
 
   Field& add(const char* key, ParamKind kind, const char* unit, Range range, const char* help) {
     Field f;

@@ -26,8 +26,9 @@ const std::vector<ControlLaw>& controlLaws();
 // True for a value of the enum (a PARAMS law field is an int8 from the wire).
 bool isControlLaw(ControlLaw law);
 
-// Each member is declared once (key, unit, default, range, help) in LqrParams::declaration()
-// (lqr_params.cpp); the default constructor takes the defaults from there.
+// Each member is declared once (key, unit, default, range, help, whether PARAMS changes it in
+// flight) in LqrParams::declaration() (lqr_params.cpp); the default constructor takes the
+// defaults from there.
 struct LqrParams {
   State q_diag;
   Input r_diag;
@@ -68,11 +69,10 @@ const char* toString(ParamsOutcome outcome);
 // The LQR parameters of a running gain solver or controller: those loaded, changed by PARAMS under
 // one rule for both (and for their replay):
 //   - an update not after the last applied one in (utime, seq) order is kNotNewer;
-//   - FIELD_WEIGHTS sets q_diag and r_diag, FIELD_LIMITS omega_max, c_min and c_max, FIELD_LAW the
-//     law (an unknown law is kInvalid); FIELD_MASS
-//     and FIELD_TRACKING belong to the bodyrate loop and the reference generator and change
-//     nothing here, but a mass outside kMassRange or an unknown tracking mode makes the whole
-//     update kInvalid, as does any other bit;
+//   - an update checkInFlight() refuses is kInvalid (any part of it: the mass and the tracking
+//     mode belong to the bodyrate loop and the reference generator, but the update is one change);
+//   - the keys LqrParams declares in flight take the update's values for the groups it names
+//     (FIELD_WEIGHTS q_diag and r_diag, FIELD_LIMITS omega_max, c_min and c_max, FIELD_LAW law);
 //   - the result must pass LqrParams::invalidReason(), else kInvalid;
 //   - anything but kApplied leaves everything unchanged; kApplied moves seq() to the update's.
 class RuntimeLqrParams {

@@ -7,14 +7,12 @@
 
 #include "sdlqr/config/param_table.hpp"
 #include "sdlqr/math/types.hpp"
+#include "sdlqr/messages/messages.hpp"
 
 namespace sdlqr {
 
 using Mat34 = Eigen::Matrix<double, 3, 4>;
 using Mat44 = Eigen::Matrix<double, 4, 4>;
-
-// The masses a vehicle file or a PARAMS update may give (vehicle.mass is declared with it).
-inline constexpr Range kMassRange = Range::open(0.0, 100.0);  // [kg]
 
 // Each member is declared once (key, unit, default, range, help) in VehicleParams::declaration()
 // (vehicle.cpp); the default constructor takes the defaults from there.
@@ -40,8 +38,9 @@ struct VehicleParams {
   Mat44 effectiveness() const;
   Mat3 inertia() const { return inertia_diag.asDiagonal(); }
   double hoverThrustPerRotor(double gravity) const { return mass * gravity / 4.0; }
-  // The one rule for a mass, from the file or at run time (PARAMS FIELD_MASS): within kMassRange
-  // and liftable by these rotors under `gravity`. Empty when accepted, else the reason.
+  // The rule for a mass these rotors fly, from the file or at run time (PARAMS FIELD_MASS): within
+  // the range vehicle.mass declares and liftable under `gravity`. Empty when accepted, else the
+  // reason.
   std::string massInvalidReason(double candidate_mass, double gravity) const;
 
   // Reads the `vehicle` mapping; arm_length alone also sets the X layout unless rotor_xy is given.

@@ -1,25 +1,15 @@
 #pragma once
-// Channel names, one type per channel (see lcmtypes/), with the optional vehicle prefix.
+// Channel names, one type per channel, with the optional vehicle prefix. Each channel is declared
+// with its type in lcmtypes/*.lcm (@channel NAME, @split_port N); sdlqr/lcmtypes/generated/
+// channels.hpp (in the build folder) holds channel::k<Name>, the Stream of each channel, the table
+// kChannels and channelOf<Msg>(). Below: what is done with the names.
 
 #include <string>
 #include <string_view>
 
-namespace sdlqr::channel {
+#include "sdlqr/lcmtypes/generated/channels.hpp"
 
-inline constexpr std::string_view kImu = "IMU";                  // imu_t
-inline constexpr std::string_view kVioPose = "VIO_POSE";         // vio_pose_t
-inline constexpr std::string_view kStateEstimate = "STATE_EST";  // state_estimate_t
-inline constexpr std::string_view kRateCommand = "RATE_CMD";     // rate_cmd_t
-inline constexpr std::string_view kMotorCommand = "MOTOR_CMD";   // motor_cmd_t
-inline constexpr std::string_view kGains = "GAINS";              // gains_t
-inline constexpr std::string_view kReference = "REFERENCE";      // reference_t
-inline constexpr std::string_view kTrajectory = "TRAJECTORY";    // trajectory_t
-inline constexpr std::string_view kDisturbance = "DISTURBANCE";  // disturbance_t
-inline constexpr std::string_view kParams = "PARAMS";            // params_t
-inline constexpr std::string_view kCommand = "COMMAND";          // command_t
-inline constexpr std::string_view kHeartbeat = "HEARTBEAT";      // heartbeat_t
-inline constexpr std::string_view kSimTruth = "SIM_TRUTH";       // sim_truth_t
-inline constexpr std::string_view kSimClock = "SIM_CLOCK";       // sim_clock_t
+namespace sdlqr::channel {
 
 // Bus layout. With one multicast port for everything every process's socket receives every
 // message of the stack (~2,700 a second) and LCM drops those it did not subscribe to in user
@@ -31,19 +21,13 @@ inline constexpr std::string_view kSimClock = "SIM_CLOCK";       // sim_clock_t
 // base port. Channels one subscriber needs in their send order share a port (IMU and VIO_POSE: the
 // estimator's inputs, from one publisher); across ports a process handles messages in the order
 // its receive threads hand them over. bench/README.md has the measurements.
-inline constexpr struct {
-  std::string_view channel;
-  int port_offset;  // [-] added to the base port
-} kSplitPorts[] = {
-    {kImu, 1},         {kVioPose, 1},   {kMotorCommand, 2}, {kStateEstimate, 3},
-    {kSimTruth, 4},    {kRateCommand, 5}, {kReference, 6},  {kSimClock, 7},
-};
-
+// A channel's @split_port in its .lcm file says which port it takes (kChannels[].split_port).
+//
 // Port offset of a channel (base name, without vehicle prefix) in the split layout; 0 (the
-// base port) for every channel not in kSplitPorts, including names that are not ours.
+// base port) for every channel without a port of its own, including names that are not ours.
 constexpr int splitPortOffset(std::string_view base) {
-  for (const auto& entry : kSplitPorts) {
-    if (entry.channel == base) return entry.port_offset;
+  for (const ChannelInfo& entry : kChannels) {
+    if (entry.name == base) return entry.split_port;
   }
   return 0;
 }

@@ -7,6 +7,9 @@
 //   lcm_fields.hpp    LcmFields<T>: every field of an lcm-gen class; type name -> class
 //   wire_fits.hpp     encodingFits: the bytes hold exactly one encoding (allocation-free walk)
 //   convert.hpp       fromLcm / toLcm between lcm-gen classes and plain structs
+//   channels.hpp      each type's channel (@channel): names, streams, split-layout ports, traits
+//   outbox.hpp        Outbox: one publish overload per type with a channel (no LCM)
+//   json_schemas.hpp  the JSON Schema of each type's JSON encoding (no LCM)
 
 #include <string>
 #include <vector>
@@ -28,8 +31,17 @@ std::string emitConvertHeader(const PlainModel& model, const std::string& source
 std::string emitDescriptorsHeader(const std::vector<LcmStruct>& types, const std::string& source_note);
 std::string emitLcmFieldsHeader(const std::vector<LcmStruct>& types, const std::string& source_note);
 std::string emitWireFitsHeader(const std::vector<LcmStruct>& types, const std::string& source_note);
+// LcmSchemaError when two types name one channel.
+std::string emitChannelsHeader(const PlainModel& model, const std::string& source_note);
+std::string emitOutboxHeader(const PlainModel& model, const std::string& source_note);
 
-// All six, in the order above.
+std::string emitJsonSchemasHeader(const std::vector<LcmStruct>& types, const std::string& source_note);
+
+// The JSON Schema (draft-07) of one type's JSON encoding, and its name "<package>.<type>".
+std::string jsonSchemaText(const LcmStruct& type);
+std::string jsonSchemaName(const LcmStruct& type);
+
+// All nine, in the order above.
 std::vector<GeneratedHeader> emitAll(const std::vector<LcmStruct>& types, const std::string& source_note);
 
 // "<package path>/lcmtypes/generated/<name>", the include path of a generated header.

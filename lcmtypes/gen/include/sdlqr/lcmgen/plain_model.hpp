@@ -56,6 +56,14 @@ struct PlainEnum {
   std::string defined_in;             // "gains_t.status STATUS_*": where its constants are
 };
 
+// The bus channel a message type travels on (one type per channel), from the .lcm file's
+// `@channel NAME [Id]` and `@split_port N`.
+struct PlainChannel {
+  std::string name;    // "STATE_EST"; empty: the type has no channel of its own
+  std::string id;      // "StateEstimate": channel::kStateEstimate, Stream::kStateEstimate
+  int split_port = 0;  // port offset in the split bus layout; 0: the base port
+};
+
 struct PlainStruct {
   std::string name;
   std::string comment;
@@ -63,6 +71,7 @@ struct PlainStruct {
   std::vector<std::string> methods;
   std::vector<PlainConstant> constants;
   std::vector<PlainMember> members;
+  PlainChannel channel;
 };
 
 struct PlainModel {

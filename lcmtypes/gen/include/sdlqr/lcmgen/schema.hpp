@@ -11,6 +11,10 @@
 // Annotations live in comments, so they never change the LCM fingerprint:
 //   before `struct`:  @plain Name                  name of the plain struct (required)
 //                     @method <C++ declaration>    a member defined by hand (common/messages)
+//                     @channel NAME [Id]           the bus channel of the type (one type per
+//                                                  channel); Id names channel::kId and
+//                                                  Stream::kId (default: the type's name, CamelCase)
+//                     @split_port N                its port offset in the split bus layout
 //   after a field:    @as Type                     plain member type (Vec3, Quat, bool, ...)
 //                     @enum Name PREFIX_           enum class from the constants PREFIX_*
 //                     @enum Name                   ... defined by another .lcm file

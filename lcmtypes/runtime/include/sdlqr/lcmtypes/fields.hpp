@@ -45,6 +45,30 @@ inline constexpr bool kIsVector = false;
 template <class T, class A>
 inline constexpr bool kIsVector<std::vector<T, A>> = true;
 
+// The integer fields of a message visited so far: the lengths of the variable-length arrays after
+// them. A decoded lcm-gen message's arrays may hold more than their length (a decode into a reused
+// message does not shrink them), so the length field, not the vector, says how many there are.
+class ArrayLengths {
+ public:
+  template <class T>
+  void note(const FieldDescriptor& field, const T& value) {
+    if constexpr (std::is_integral_v<T>) values_.emplace_back(field.name, static_cast<int64_t>(value));
+  }
+  // Elements of `field` at array depth `depth`: the fixed size, the length field's value, or -1
+  // when the length field has not been seen.
+  int64_t of(const FieldDescriptor& field, int depth) const {
+    const ArrayDimension& dim = field.dimensions[depth];
+    if (dim.size > 0) return dim.size;
+    for (const auto& [name, value] : values_) {
+      if (name == dim.length_field) return value;
+    }
+    return -1;
+  }
+
+ private:
+  std::vector<std::pair<std::string_view, int64_t>> values_;
+};
+
 template <class Visitor, class First, class... Rest>
 void visitFields(Visitor&& v, First&& first, Rest&&... rest) {
   PlainFields<std::remove_cv_t<std::remove_reference_t<First>>>::visit(v, std::forward<First>(first),

@@ -24,8 +24,10 @@ namespace sdlqr::analysis {
 
 enum class Bound { kAtMost, kAtLeast };
 
-// What one value of a criterion belongs to: the flight, or each window of a kind.
-enum class Scope { kFlight, kJump, kTakeoff, kSetpoint, kPull, kTrajectory, kTrajectoryPull };
+// What one value of a criterion belongs to: the flight, or each window of a kind. The windows are
+// the scenario's (scenario_events.hpp): one check per event the criterion applies to, failing
+// with the reason when the event is not in the log.
+enum class Scope { kFlight, kEvent, kJump, kTakeoff, kSetpoint, kPull, kLanding, kTrajectory, kTrajectoryPull };
 
 struct CriterionSpec {
   std::string_view key;
@@ -35,6 +37,8 @@ struct CriterionSpec {
   Scope scope = Scope::kFlight;
   // The value judged; exactly the one matching `scope` is set.
   double (*of_flight)(const FlightReport&) = nullptr;
+  double (*of_event)(const ExpectedEvent&) = nullptr;
+  double (*of_landing)(const Landing&) = nullptr;
   double (*of_setpoint)(const SetpointWindow&) = nullptr;
   double (*of_pull)(const PullWindow&) = nullptr;
   double (*of_trajectory)(const PathTrackingReport&) = nullptr;
@@ -43,6 +47,9 @@ struct CriterionSpec {
   bool needs_calibration = false;
   // Needs process HEARTBEATs (a bus flight): not judged in an in-process flight.
   bool needs_heartbeats = false;
+  // Judged in every flight, against default_limit unless the scenario sets the key.
+  bool always = false;
+  double default_limit = 0.0;
 };
 
 struct ThresholdSpec {
@@ -66,8 +73,9 @@ std::string describe(const CriterionSpec& spec, const mission::Scenario& scenari
 void checkCriteriaKeys(const mission::Scenario& scenario);
 
 // Appends one Check per criterion the scenario names and per window it applies to, plus the
-// checks every flight gets (no non-finite message, no crash). Criteria that cannot be judged on
-// this report (no calibration, no heartbeats) are listed in report.not_judged with the reason.
+// checks every flight gets (no non-finite message, no crash, each scenario event in the log).
+// Criteria that cannot be judged on this report (no calibration, no heartbeats) are listed in
+// report.not_judged with the reason.
 void judgeCriteria(FlightReport& report, const mission::Scenario& scenario, const AnalysisOptions& options);
 
 }  // namespace sdlqr::analysis

@@ -14,6 +14,7 @@
 
 #include "sdlqr/analysis/path_tracking.hpp"
 #include "sdlqr/analysis/recovery.hpp"
+#include "sdlqr/analysis/scenario_events.hpp"
 #include "sdlqr/calibrate/calibration.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/math/types.hpp"
@@ -39,6 +40,7 @@ struct SetpointWindow {
   double overshoot = 0.0;         // [-] largest travel beyond `to` along the jump, over size
   double steady_error = kNotReached;  // [m] mean error over the last hover_window of the window
   double max_error_after_settle = kNotReached;  // [m]
+  std::string missing;            // why the scenario's window was not flown (its COMMAND not in the log)
 };
 
 // A disturbance while holding a setpoint: a force or torque kick, or a spring holding the vehicle.
@@ -55,6 +57,16 @@ struct PullWindow {
   // the vehicle (along the deviation at its largest), over that largest deviation (Fig. 4: "very
   // little overshoot")
   double return_overshoot = 0.0;
+  std::string missing;            // why the scenario's pull was not judged (its DISTURBANCE not in the log)
+};
+
+// A LAND of the scenario and the touchdown that followed it.
+struct Landing {
+  std::string label;
+  double start = 0.0;                  // [s] the LAND command
+  double touchdown = kNotReached;      // [s] first ground contact after it (NaN: still airborne at the end)
+  double touchdown_speed = kNotReached;  // [m/s] vertical speed just before that contact
+  std::string missing;                 // its COMMAND not in the log
 };
 
 struct EstimatorAccuracy {
@@ -108,6 +120,7 @@ struct Check {
   double limit = 0.0;
   bool upper = true;     // pass when value <= limit (else value >= limit)
   bool pass = false;
+  std::string note;      // why a window has no value: "pull +y at 39.0 s: DISTURBANCE not in the log"
 };
 
 // A criterion of the scenario that this report cannot judge, and why (no calibration of the
@@ -119,13 +132,15 @@ struct NotJudged {
 
 struct FlightReport {
   std::string scenario;
+  std::vector<ExpectedEvent> events;  // the scenario's, each looked up in the log (scenario_events.hpp)
   double flight_start = kNotReached;  // [s] first airborne truth sample
   double flight_end = kNotReached;
   std::vector<SetpointWindow> setpoints;
   double settle_error = kNotReached;  // [m] the error a jump settles below (jump_settle_error)
   std::vector<PullWindow> pulls;
   double return_error = kNotReached;  // [m] back after a pull within this (pull_return_error)
-  std::vector<PathTrackingReport> trajectories;  // one per tracked TRAJECTORY upload
+  std::vector<Landing> landings;
+  std::vector<PathTrackingReport> trajectories;  // one per trajectory event, and per other tracked TRAJECTORY
   std::optional<RecoveryReport> recovery;        // airborne start or throw (recovery.hpp)
   int64_t trajectory_aborts = 0;                 // by the controller's guard (trajectory_aborts.hpp)
   EstimatorAccuracy estimator;
@@ -160,6 +175,7 @@ struct FlightReport {
   std::vector<Check> checks;
   std::vector<NotJudged> not_judged;
 
+  // Every check passes, and there is at least one: a report that judged nothing fails.
   bool passed() const;
 };
 

@@ -62,6 +62,9 @@ class PathGeometry {
 
 // A pull (DISTURBANCE) that happened while a trajectory was tracked.
 struct PathPull {
+  std::string label;                 // the scenario's pull (set by analyzeFlight)
+  std::string missing;               // why it has no figures: its DISTURBANCE not in the log, or
+                                     // played after the trajectory's window
   double start = 0.0;                // [s]
   double release = 0.0;              // [s]
   double max_distance = 0.0;         // [m] largest distance to the path from start to window end
@@ -80,6 +83,8 @@ struct SkippedSample {
 
 struct PathTrackingReport {
   std::string label;                 // the scenario event's label (set by analyzeFlight)
+  std::string missing;               // why the scenario's trajectory has no figures (not in the
+                                     // log, or never tracked); empty when it was flown
   int64_t trajectory_seq = -1;
   ReferenceMode tracking = ReferenceMode::kSpatial;  // as uploaded
   bool closed = false;

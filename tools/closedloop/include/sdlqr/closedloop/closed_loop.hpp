@@ -9,6 +9,7 @@
 // seed give the same flight, bit for bit, much faster than real time — for scenario regression
 // and Monte Carlo.
 //
+// The routing is the cores' declared ports (sdlqr/messages/ports.hpp, in_process_wiring.hpp).
 // Every message is recorded into a FlightLog, so the analysis of a bus flight applies unchanged.
 // inject() puts a message on the loop as if a foreign publisher had sent it (hostile-input tests).
 
@@ -27,7 +28,7 @@
 #include "sdlqr/lowlevel/lowlevel_params.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/math/vehicle.hpp"
-#include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/in_process_wiring.hpp"
 #include "sdlqr/mission/mission_core.hpp"
 #include "sdlqr/mission/scenario.hpp"
 #include "sdlqr/sim/sim_core.hpp"
@@ -41,8 +42,10 @@ namespace sdlqr::closedloop {
 // ConfigError naming the key).
 using StackConfig = params::VehicleFile;
 
+// Every channel is recorded but these: IMU and MOTOR_CMD (1 kHz: large) unless asked for;
+// SIM_CLOCK never (the scenario player's clock: no analysis reads it).
 struct RecordOptions {
-  bool imu = false;         // 1 kHz: large; off unless asked for
+  bool imu = false;
   bool motor_command = false;
 };
 
@@ -56,13 +59,15 @@ struct Plant {
 // The mission's re-sends are off by default (0): the loop has no restarted process to tell.
 // `plant`: the simulator's airframe when it differs from the one the stack assumes (a plant
 // mismatch: the bodyrate loop and the controller keep config.vehicle); nullptr: config.vehicle.
-class ClosedLoop : private Outbox {
+class ClosedLoop {
  public:
   ClosedLoop(const StackConfig& config, const mission::Scenario& scenario, RecordOptions record = {},
              double command_resend_s = 0.0);
   // The simulator flies `plant`; every other core reads `config` (the nominal model).
   ClosedLoop(const StackConfig& config, const Plant& plant, const mission::Scenario& scenario,
              RecordOptions record = {}, double command_resend_s = 0.0);
+  ClosedLoop(const ClosedLoop&) = delete;
+  ClosedLoop& operator=(const ClosedLoop&) = delete;
 
   // One physics step. Returns false once the scenario's duration has passed.
   bool step();
@@ -70,11 +75,11 @@ class ClosedLoop : private Outbox {
   // Delivers a message to its consumers now (recorded like every other), as a foreign publisher.
   template <class Msg>
   void inject(const Msg& message) {
-    publish(message);
+    wiring_.publish(message);
   }
 
   int64_t utime() const { return sim_.simulator().utime(); }
-  const logger::FlightLog& log() const { return log_; }
+  const logger::FlightLog& log() const { return recorder_.log; }
   const sim::SimCore& sim() const { return sim_; }
   const estimator::EstimatorCore& estimator() const { return estimator_; }
   const gains::GainsCore& gains() const { return gains_; }
@@ -83,35 +88,40 @@ class ClosedLoop : private Outbox {
   const mission::MissionCore& mission() const { return mission_; }
 
  private:
-  // The wiring: each message to the cores that subscribe to its channel on the bus.
-  void publish(const ImuSample& m) override;
-  void publish(const VioPose& m) override;
-  void publish(const SimTruth& m) override;
-  void publish(const StateEstimate& m) override;
-  void publish(const GainSet& m) override;
-  void publish(const RateCommand& m) override;
-  void publish(const Reference& m) override;
-  void publish(const MotorCommand& m) override;
-  void publish(const Command& m) override;
-  void publish(const Disturbance& m) override;
-  void publish(const ParamsUpdate& m) override;
-  void publish(const Trajectory& m) override;
-  void publish(const SimClockTick& m) override;
+  // Every message into its series of the log, as the recorder would on the bus.
+  struct Recorder {
+    RecordOptions options;
+    logger::FlightLog log;
+    template <class Msg>
+    void operator()(const Msg& m) {
+      if constexpr (std::is_same_v<Msg, ImuSample>) {
+        if (!options.imu) return;
+      } else if constexpr (std::is_same_v<Msg, MotorCommand>) {
+        if (!options.motor_command) return;
+      }
+      if constexpr (logger::FlightLog::kRecords<Msg> && !std::is_same_v<Msg, SimClockTick>) {
+        logger::Series<Msg>& series = log.series<Msg>();
+        series.messages.push_back(m);
+        series.receive_utime.push_back(m.utime);
+      }
+    }
+  };
 
-  template <class T>
-  static void record(logger::Series<T>& series, const T& message) {
-    series.messages.push_back(message);
-    series.receive_utime.push_back(message.utime);
-  }
-
-  RecordOptions record_;
+  Recorder recorder_;
   sim::SimCore sim_;
   estimator::EstimatorCore estimator_;
   lowlevel::LowlevelCore lowlevel_;
   controller::ControllerCore controller_;
   gains::GainsCore gains_;
   mission::MissionCore mission_;
-  logger::FlightLog log_;
+  // The order a message reaches its consumers in: the bodyrate loop acts on an IMU sample before
+  // the estimator publishes from it (the command computed from that sample comes a step later,
+  // as on the bus); the solver gets an estimate before the controller, so its GAINS reach the
+  // controller before the tick of that estimate; the mission (throw mode) after the controller,
+  // so a throw's ARM and GOTO follow that tick.
+  InProcessWiring<Recorder, lowlevel::LowlevelCore, estimator::EstimatorCore, gains::GainsCore,
+                  controller::ControllerCore, mission::MissionCore, sim::SimCore>
+      wiring_{recorder_, lowlevel_, estimator_, gains_, controller_, mission_, sim_};
 };
 
 }  // namespace sdlqr::closedloop

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "sdlqr/controller/controller_core.hpp"
@@ -36,6 +37,7 @@
 #include "sdlqr/health/watchdog.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/messages/outbox.hpp"
+#include "sdlqr/messages/ports.hpp"
 #include "sdlqr/replay/recorded_flight.hpp"
 
 namespace sdlqr::replay {
@@ -134,7 +136,12 @@ class Recomputation {
   void applyCommand(std::size_t index);
   void onRecordedTrajectory(std::size_t index);
   void deliverTrajectoriesNamedBy(int64_t reference_seq);
-  void onParams(const ParamsUpdate& update);
+  // The recomputed cores, in the order of the in-process loop (the solver before the controller).
+  auto cores() { return std::tie(estimator_, gains_, controller_); }
+  template <class Msg>
+  void deliver(const Msg& m);
+  template <class Core>
+  void rejectIfTaken(Core& core, const UndecodableInput& input);
 
   const RecordedFlight& flight_;
   std::size_t next_ = 0;

@@ -67,9 +67,12 @@ struct SoakReport {
 
 // Splits [start, end) into full windows of limits.window_s and judges every later window's RSS
 // and fds (which never shrink back by themselves) and the last window's CPU and latency (noisy)
-// against the first. Throws std::invalid_argument when fewer than two full windows fit.
+// against the first. Every `expected` process (those the launcher started) must have samples in
+// every window: one without is a failed check ("sampled[NAME]@window 1"), never a process left
+// unjudged. Throws std::invalid_argument when fewer than two full windows fit.
 SoakReport judgeGrowth(const std::vector<ResourceSample>& samples, const std::vector<LatencySample>& latency,
-                       double start, double end, const GrowthLimits& limits);
+                       double start, double end, const GrowthLimits& limits,
+                       const std::vector<std::string>& expected = {});
 
 // The runner's CSV: header "t,process,rss_kib,fds,cpu_seconds", one row per sample. Throws
 // std::runtime_error naming the file and line on a malformed row.
