@@ -45,10 +45,16 @@ grep -E '^(deploy|launch):|^\[(px4|emulator)\]' "$work/deploy.out"
 echo "fly_px4: deploy exit code $status"
 # Killed on purpose, the controller is the launcher's one crash (exit 1): any other fails the test.
 others="$(grep -E '^launch: .*(crashed|ended early|failed|exited with code)' "$work/deploy.out" | grep -v '^launch: controller ')"
-if [ "$case" = controller ] && [ "$status" -eq 1 ] && [ -z "$others" ] && grep -q '^launch: mission finished' "$work/deploy.out"; then
-  echo "ok   the flight ended with the scenario; the killed controller was its only crash"
-elif [ "$status" -ne 0 ]; then
-  exit 1
+if [ "$case" = controller ]; then
+  if [ "$status" -eq 1 ] && [ -z "$others" ] && grep -q '^launch: mission finished' "$work/deploy.out"; then
+    echo "ok   the flight ended with the scenario; the killed controller was its only crash"
+  else
+    echo "FAIL the flight: deploy exit $status, expected 1 with the killed controller its only crash"; exit 1
+  fi
+elif [ "$status" -eq 0 ]; then
+  echo "ok   the flight ended with the scenario (deploy exit 0)"
+else
+  echo "FAIL the flight: deploy exit $status, expected 0"; exit 1
 fi
 ok=0
 faultcheck() { "$build/bin/sdlqr-faultcheck" "$log" "$@" | grep -E '^(ok|FAIL)|hover error'; return "${PIPESTATUS[0]}"; }
