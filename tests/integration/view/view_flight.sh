@@ -46,7 +46,7 @@ wait "$unbounded_view" || view_status=1
 trap - EXIT
 tail -3 "$work/launch.out"
 echo "view_flight: launcher exit code $launch_status, page watcher $watcher_status, sdlqr-view $view_status"
-if [ "$launch_status" -ne 0 ] || [ "$watcher_status" -ne 0 ] || [ "$view_status" -ne 0 ]; then
+if ! { [ "$launch_status" -eq 0 ] && [ "$watcher_status" -eq 0 ] && [ "$view_status" -eq 0 ]; }; then
   cat "$work/live.out" "$work/view.out"
   exit 1
 fi
