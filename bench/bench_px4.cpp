@@ -9,19 +9,13 @@
 #include <vector>
 
 #include "sdlqr/mavlink/parser.hpp"
+#include "sdlqr/messages/in_process_wiring.hpp"
 #include "sdlqr/px4/bridge_core.hpp"
 
 namespace {
 
 using namespace sdlqr;
 
-struct Discard : px4::ByteSink {
-  bool write(const uint8_t*, size_t) override { return true; }
-};
-struct NoBus {
-  template <class M>
-  void operator()(const M&) const {}
-};
 
 mavlink::Odometry odometry(int64_t utime) {
   mavlink::Odometry o;
@@ -68,10 +62,10 @@ BENCHMARK(BM_ParseOdometry)->ArgName("signed")->Arg(0)->Arg(1);
 
 // ODOMETRY bytes -> STATE_EST published, and RATE_CMD -> SET_ATTITUDE_TARGET written, in the core.
 void BM_BridgeCore(benchmark::State& state) {
-  Discard sink;
+  px4::DiscardingSink sink;
   px4::MavlinkEndpoint endpoint({1, px4::kOnboardComputerComponent}, sink, [] { return uint64_t{0}; });
   px4::BridgeCore core(px4::BridgeParams(), 9.81, ValidationLimits(), endpoint);
-  OutboxTo<NoBus> bus{NoBus{}};
+  OutboxTo<NoObserver> bus{NoObserver{}};
   mavlink::FrameWriter autopilot(mavlink::Address{1, 1});
   uint8_t bytes[mavlink::kMaxFrameSize];
   mavlink::Heartbeat heartbeat;

@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "sdlqr/mavlink/parser.hpp"
+#include "sdlqr/messages/in_process_wiring.hpp"
 #include "sdlqr/messages/outbox.hpp"
 #include "sdlqr/px4/bridge_core.hpp"
 
@@ -17,13 +18,6 @@ namespace {
 
 using namespace sdlqr;
 
-struct Discard : px4::ByteSink {
-  bool write(const uint8_t*, size_t) override { return true; }
-};
-struct NoBus {
-  template <class M>
-  void operator()(const M&) const {}
-};
 
 void rewriteAndCompare(const mavlink::Frame& f) {
   const mavlink::MessageInfo* info = mavlink::findMessage(f.id);
@@ -58,10 +52,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     return 0;
   }
-  static Discard sink;
+  static px4::DiscardingSink sink;
   static px4::MavlinkEndpoint endpoint({1, px4::kOnboardComputerComponent}, sink, [] { return uint64_t{0}; });
   static px4::BridgeCore bridge(px4::BridgeParams(), 9.81, ValidationLimits(), endpoint);
-  static OutboxTo<NoBus> bus{NoBus{}};
+  static OutboxTo<NoObserver> bus{NoObserver{}};
   static double now = 0.0;
   now += 0.01;
   bridge.onWallTime(now);

@@ -10,17 +10,13 @@
 #include <vector>
 
 #include "sdlqr/mavlink/parser.hpp"
+#include "sdlqr/messages/in_process_wiring.hpp"
 #include "sdlqr/px4/bench_display.hpp"
 #include "sdlqr/px4/frames.hpp"
 #include "sdlqr/px4/link_io.hpp"
 
 namespace sdlqr::px4 {
 namespace {
-
-struct DiscardMessages {
-  template <class M>
-  void operator()(const M&) const {}
-};
 
 std::string errorOf(const std::string& url) {
   try {
@@ -84,7 +80,7 @@ TEST(BenchDisplay, ARollOf30DegreesReadsAlikeInBothConventions) {
   const double half = 15.0 * M_PI / 180.0;  // nose north, right wing 30 deg down
   o.q = {static_cast<float>(std::cos(half)), static_cast<float>(std::sin(half)), 0.0f, 0.0f};
   uint8_t bytes[mavlink::kMaxFrameSize];
-  OutboxTo<DiscardMessages> bus{DiscardMessages{}};
+  OutboxTo<NoObserver> bus{NoObserver{}};
   core.onBytes(bytes, autopilot.write(o, 0, bytes), true, bus);
   const std::string text = benchText(core);
   const size_t px4 = text.find("PX4 (NED/FRD)"), ours = text.find("sdlqr (z up)");

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "sdlqr/mavlink/dispatch.hpp"
+#include "sdlqr/messages/in_process_wiring.hpp"
 #include "sdlqr/params/vehicle_file.hpp"
 #include "sdlqr/px4/px4_modes.hpp"
 #include "sdlqr/px4emu/emulator_core.hpp"
@@ -32,11 +33,6 @@ struct Frames : px4::ByteSink {
   std::map<uint32_t, int> count;
   std::vector<mavlink::CommandAck> acks;
   mavlink::Heartbeat heartbeat;
-};
-
-struct NoBus {
-  template <class M>
-  void operator()(const M&) const {}
 };
 
 class EmulatorTest : public ::testing::Test {
@@ -87,7 +83,7 @@ class EmulatorTest : public ::testing::Test {
   Frames frames_;
   px4::MavlinkEndpoint end_;
   EmulatorCore emulator_;
-  OutboxTo<NoBus> bus_{NoBus{}};
+  OutboxTo<NoObserver> bus_{NoObserver{}};
   mavlink::FrameWriter companion_{mavlink::Address{1, 191}};
 };
 

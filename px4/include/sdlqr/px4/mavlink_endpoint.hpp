@@ -21,6 +21,11 @@ class ByteSink {
   // One whole frame. Returns false when the transport could not take it (counted).
   virtual bool write(const uint8_t* data, size_t size) = 0;
 };
+// Takes every frame and keeps none (benchmarks and fuzzing, where only the work of writing counts).
+class DiscardingSink : public ByteSink {
+ public:
+  bool write(const uint8_t*, size_t) override { return true; }
+};
 
 // signing.hpp's clock (10 us since 2015), read when a frame is signed or checked.
 using SigningClock = std::function<uint64_t()>;
