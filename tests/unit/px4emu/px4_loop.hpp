@@ -87,7 +87,7 @@ class Px4Loop {
     logger::FlightLog log;
     template <class Msg>
     void operator()(const Msg& m) {
-      if constexpr (logger::FlightLog::kRecords<Msg>) {
+      if constexpr (logger::FlightLog::records<Msg>()) {
         logger::Series<Msg>& series = log.series<Msg>();
         series.messages.push_back(m);
         series.receive_utime.push_back(m.utime);

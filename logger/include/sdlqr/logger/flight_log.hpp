@@ -88,8 +88,11 @@ struct FlightLog {
                     disturbance, params, command, heartbeat, sim_truth, sim_clock);
   }
   // Whether the log has a series of message type Msg, and that series.
+  // (A function: its body sees the class complete, which clang requires of allSeries()'s type.)
   template <class Msg>
-  static constexpr bool kRecords = detail::TupleHas<Series<Msg>&, decltype(std::declval<FlightLog&>().allSeries())>::value;
+  static constexpr bool records() {
+    return detail::TupleHas<Series<Msg>&, decltype(std::declval<FlightLog&>().allSeries())>::value;
+  }
   template <class Msg>
   Series<Msg>& series() {
     return std::get<Series<Msg>&>(allSeries());

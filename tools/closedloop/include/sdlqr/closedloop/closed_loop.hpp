@@ -99,7 +99,7 @@ class ClosedLoop {
       } else if constexpr (std::is_same_v<Msg, MotorCommand>) {
         if (!options.motor_command) return;
       }
-      if constexpr (logger::FlightLog::kRecords<Msg> && !std::is_same_v<Msg, SimClockTick>) {
+      if constexpr (logger::FlightLog::records<Msg>() && !std::is_same_v<Msg, SimClockTick>) {
         logger::Series<Msg>& series = log.series<Msg>();
         series.messages.push_back(m);
         series.receive_utime.push_back(m.utime);
