@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots of a batch folder written by `sdlqr-batch` (README, Batches).
+"""Plots of a batch folder written by `sdlqr-batch` (docs/batches.md, Batches).
 
 usage: scripts/plot_batch.py DIR [--out PLOTS_DIR]
 

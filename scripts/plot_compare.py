@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots of a comparison folder written by `sdlqr-compare` (README, Comparing the controllers).
+"""Plots of a comparison folder written by `sdlqr-compare` (docs/controllers.md, Comparing the controllers).
 
 usage: scripts/plot_compare.py DIR [--out PLOTS_DIR]
 

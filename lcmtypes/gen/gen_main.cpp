@@ -5,6 +5,11 @@
 #include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include "sdlqr/lcmgen/emit.hpp"
 #include "sdlqr/lcmgen/generated_file.hpp"
@@ -13,17 +18,27 @@ using sdlqr::lcmgen::readFile;
 using sdlqr::lcmgen::writeIfChanged;
 
 int main(int argc, char** argv) {
-  if (argc < 3 || std::string(argv[1]) == "--help") {
-    std::cout << "usage: sdlqr_lcmtypes_gen OUT_DIR FILE.lcm...\n\n"
-                 "Writes OUT_DIR/<package>/lcmtypes/generated/{plain,plain_fields,descriptors,lcm_fields,\n"
-                 "wire_fits,convert,channels,outbox,json_schemas}.hpp from the LCM definitions of one package (their @ annotations:\n"
-                 "lcmtypes/gen/include/sdlqr/lcmgen/schema.hpp); exit code 2 with file:line on a\n"
-                 "definition it cannot describe.\n";
-    return argc < 3 ? 2 : 0;
+  // CLI11 directly (Debian libcli11-dev): the generator is built before the libraries whose
+  // ArgParser every other executable uses.
+  std::string out_dir;
+  std::vector<std::string> files;
+  CLI::App app("Writes OUT_DIR/<package>/lcmtypes/generated/{plain,plain_fields,descriptors,lcm_fields,\n"
+               "wire_fits,convert,channels,outbox,json_schemas}.hpp from the LCM definitions of one package (their\n"
+               "@ annotations: lcmtypes/gen/include/sdlqr/lcmgen/schema.hpp); exit code 2 with file:line on a\n"
+               "definition it cannot describe.",
+               "sdlqr_lcmtypes_gen");
+  app.add_option("OUT_DIR", out_dir, "folder of the generated headers")->required();
+  app.add_option("FILE.lcm", files, "the package's definitions")->required();
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "sdlqr_lcmtypes_gen: " << e.what() << " (see --help)\n";
+    return 2;
   }
   try {
-    const std::filesystem::path out_root = argv[1];
-    std::vector<std::string> files(argv + 2, argv + argc);
+    const std::filesystem::path out_root = out_dir;
     std::sort(files.begin(), files.end());
     std::vector<sdlqr::lcmgen::LcmStruct> types;
     for (const std::string& file : files) {

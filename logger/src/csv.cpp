@@ -230,7 +230,7 @@ bool parseValue(std::string_view text, std::string& out) {
   return true;
 }
 
-bool readJsonCell(const std::vector<std::string>& cells, std::size_t column, JsonValue& out, std::string* error) {
+bool readJsonCell(const std::vector<std::string>& cells, std::size_t column, JsonDocument& out, std::string* error) {
   if (column >= cells.size()) {
     *error = "missing column " + std::to_string(column + 1);
     return false;
@@ -243,8 +243,8 @@ bool readJsonCell(const std::vector<std::string>& cells, std::size_t column, Jso
   return true;
 }
 
-bool checkArray(const JsonValue& value, int expected_size, std::string_view field, std::string* error) {
-  if (value.isArray() && expected_size >= 0 && value.items.size() == static_cast<size_t>(expected_size)) return true;
+bool checkArray(const JsonDocument& value, int expected_size, std::string_view field, std::string* error) {
+  if (value.is_array() && expected_size >= 0 && value.size() == static_cast<size_t>(expected_size)) return true;
   *error = std::string(field) + ": expected an array of " + std::to_string(expected_size) + " elements";
   return false;
 }

@@ -5,7 +5,7 @@
 #include <limits>
 #include <set>
 
-#include "sdlqr/logger/json_writer.hpp"
+#include "sdlqr/logger/json_document.hpp"
 
 namespace sdlqr::logger {
 
@@ -86,100 +86,46 @@ PacingOrigin findOrigin(const std::vector<ChannelTimeline>& channels) {
   return origin;
 }
 
-void writeDistribution(JsonWriter& json, std::string_view name, const Distribution& d) {
-  json.key(name);
-  json.beginObject();
-  json.memberInt("count", d.count);
-  json.member("mean", d.mean);
-  json.member("min", d.min);
-  json.member("median", d.median);
-  json.member("p99", d.p99);
-  json.member("max", d.max);
-  json.endObject();
+JsonDocument counts(const std::map<std::string, int64_t>& values) {
+  JsonDocument out = JsonDocument::object();
+  for (const auto& [key, value] : values) out[key] = value;
+  return out;
 }
 
-void writeCounts(JsonWriter& json, std::string_view name, const std::map<std::string, int64_t>& counts) {
-  json.key(name);
-  json.beginObject();
-  for (const auto& [key, value] : counts) json.memberInt(key, value);
-  json.endObject();
-}
-
-void writeChannel(JsonWriter& json, const ChannelMetrics& c) {
-  json.key(c.channel);
-  json.beginObject();
-  if (c.lcm_type.empty()) {
-    json.key("type");
-    json.null();
-  } else {
-    json.member("type", c.lcm_type);
-  }
-  json.memberInt("events", c.events);
-  json.memberInt("bytes", c.bytes);
-  json.memberInt("decoded", c.decoded);
-  json.memberInt("decode_failures", c.decode_failures);
-  json.key("receive");
-  json.beginObject();
-  json.member("first_s", c.first_receive_s);
-  json.member("last_s", c.last_receive_s);
-  json.member("rate_hz", c.receive_rate_hz);
-  writeDistribution(json, "interval_ms", c.receive_interval_ms);
-  json.endObject();
+JsonDocument channelJson(const ChannelMetrics& c) {
+  JsonDocument out;
+  out["type"] = c.lcm_type.empty() ? JsonDocument() : JsonDocument(c.lcm_type);
+  out["events"] = c.events;
+  out["bytes"] = c.bytes;
+  out["decoded"] = c.decoded;
+  out["decode_failures"] = c.decode_failures;
+  out["receive"] = {{"first_s", c.first_receive_s}, {"last_s", c.last_receive_s}, {"rate_hz", c.receive_rate_hz},
+                    {"interval_ms", toJson(c.receive_interval_ms)}};
   if (c.several_publishers) {
-    json.member("note", "several processes publish here: see \"heartbeat\" for per-process figures");
+    out["note"] = "several processes publish here: see \"heartbeat\" for per-process figures";
   } else if (c.decoded > 0) {
-    json.key("sim");
-    json.beginObject();
-    json.memberInt("first_utime", c.first_utime);
-    json.memberInt("last_utime", c.last_utime);
-    json.member("duration_s", c.sim_duration_s);
-    json.member("rate_hz", c.sim_rate_hz);
-    writeDistribution(json, "interval_ms", c.sim_interval_ms);
-    json.memberInt("utime_not_increasing", c.utime_not_increasing);
-    json.endObject();
-    json.key("seq");
-    json.beginObject();
-    json.memberInt("first", c.first_seq);
-    json.memberInt("last", c.last_seq);
-    json.memberInt("lost", c.seq_lost);
-    json.memberInt("restarts", c.seq_restarts);
-    json.memberInt("repeats", c.seq_repeats);
-    json.endObject();
+    out["sim"] = {{"first_utime", c.first_utime}, {"last_utime", c.last_utime}, {"duration_s", c.sim_duration_s},
+                  {"rate_hz", c.sim_rate_hz}, {"interval_ms", toJson(c.sim_interval_ms)},
+                  {"utime_not_increasing", c.utime_not_increasing}};
+    out["seq"] = {{"first", c.first_seq}, {"last", c.last_seq}, {"lost", c.seq_lost}, {"restarts", c.seq_restarts},
+                  {"repeats", c.seq_repeats}};
   }
-  if (c.has_pacing) writeDistribution(json, "pacing_lag_ms", c.pacing_lag_ms);
-  json.endObject();
+  if (c.has_pacing) out["pacing_lag_ms"] = toJson(c.pacing_lag_ms);
+  return out;
 }
 
-void writeHeartbeat(JsonWriter& json, const ProcessHeartbeatMetrics& p) {
-  json.key(p.process);
-  json.beginObject();
-  json.memberInt("heartbeats", p.heartbeats);
-  json.memberInt("distinct_pids", p.distinct_pids);
-  json.memberInt("seq_lost", p.seq_lost);
-  json.member("first_receive_s", p.first_receive_s);
-  json.member("last_receive_s", p.last_receive_s);
-  json.member("max_interval_s", p.max_interval_s);
-  json.key("last");
-  json.beginObject();
+JsonDocument heartbeatJson(const ProcessHeartbeatMetrics& p) {
   const HeartbeatRecord& h = p.last;
-  json.member("state", processStateName(h.state));
-  json.memberInt("utime", h.utime);
-  json.memberInt("seq", h.seq);
-  json.memberInt("pid", h.pid);
-  json.memberInt("received", h.received);
-  json.memberInt("published", h.published);
-  json.memberInt("dropped", h.dropped);
-  json.memberInt("rejected", h.rejected);
-  json.memberInt("deadline_misses", h.deadline_misses);
-  json.memberInt("errors", h.errors);
-  json.member("cpu_percent", h.cpu_percent);
-  json.key("counters");
-  json.beginObject();
-  for (const auto& [name, value] : h.counters) json.memberInt(name, value);
-  json.endObject();
-  json.member("last_error", h.last_error);
-  json.endObject();
-  json.endObject();
+  JsonDocument last = {{"state", processStateName(h.state)}, {"utime", h.utime}, {"seq", h.seq}, {"pid", h.pid},
+                       {"received", h.received}, {"published", h.published}, {"dropped", h.dropped},
+                       {"rejected", h.rejected}, {"deadline_misses", h.deadline_misses}, {"errors", h.errors},
+                       {"cpu_percent", h.cpu_percent}};
+  last["counters"] = JsonDocument::object();
+  for (const auto& [name, value] : h.counters) last["counters"][name] = value;
+  last["last_error"] = h.last_error;
+  return {{"heartbeats", p.heartbeats}, {"distinct_pids", p.distinct_pids}, {"seq_lost", p.seq_lost},
+          {"first_receive_s", p.first_receive_s}, {"last_receive_s", p.last_receive_s},
+          {"max_interval_s", p.max_interval_s}, {"last", last}};
 }
 
 }  // namespace
@@ -340,83 +286,56 @@ LogMetrics computeLogMetrics(const MetricsInput& input, const MetricsOptions& op
   return m;
 }
 
-void writeMetricsJson(std::ostream& out, const LogMetrics& m) {
-  JsonWriter json(out);
-  json.beginObject();
+namespace {
 
-  json.key("log");
-  json.beginObject();
-  json.member("path", m.log.path);
-  json.memberInt("file_bytes", m.log.file_bytes);
-  json.memberInt("events", m.log.events);
-  json.memberBool("complete", m.log.complete());
-  json.memberInt("readable_bytes", m.log.readable_bytes);
-  json.memberInt("skipped_bytes", m.log.skipped_bytes);
-  json.memberInt("truncated_tail_bytes", m.log.truncated_tail_bytes);
-  json.memberInt("first_receive_utime", m.log.first_receive_utime);
-  json.memberInt("last_receive_utime", m.log.last_receive_utime);
-  json.member("receive_duration_s", spanUs(m.log.last_receive_utime, m.log.first_receive_utime) * kUsToS);
-  json.endObject();
+JsonDocument logJson(const LogMetrics& m) {
+  return {{"path", m.log.path}, {"file_bytes", m.log.file_bytes}, {"events", m.log.events},
+          {"complete", m.log.complete()}, {"readable_bytes", m.log.readable_bytes},
+          {"skipped_bytes", m.log.skipped_bytes}, {"truncated_tail_bytes", m.log.truncated_tail_bytes},
+          {"first_receive_utime", m.log.first_receive_utime}, {"last_receive_utime", m.log.last_receive_utime},
+          {"receive_duration_s", spanUs(m.log.last_receive_utime, m.log.first_receive_utime) * kUsToS}};
+}
 
-  json.key("pacing");
-  json.beginObject();
+JsonDocument pacingJson(const LogMetrics& m) {
+  JsonDocument out = JsonDocument::object();
   if (m.origin.valid) {
-    json.member("origin_channel", m.origin.channel);
-    json.memberInt("origin_receive_utime", m.origin.receive_utime);
-    json.memberInt("origin_utime", m.origin.utime);
+    out["origin_channel"] = m.origin.channel;
+    out["origin_receive_utime"] = m.origin.receive_utime;
+    out["origin_utime"] = m.origin.utime;
   }
-  if (!m.clock_channel.empty()) json.member("clock_channel", m.clock_channel);
-  json.member("real_time_factor", m.real_time_factor);
-  json.endObject();
+  if (!m.clock_channel.empty()) out["clock_channel"] = m.clock_channel;
+  out["real_time_factor"] = m.real_time_factor;
+  return out;
+}
 
-  json.key("channels");
-  json.beginObject();
-  for (const ChannelMetrics& c : m.channels) writeChannel(json, c);
-  json.endObject();
+JsonDocument gainsJson(const GainsMetrics& g) {
+  return {{"count", g.count}, {"solve_us", toJson(g.solve_us)}, {"iterations", toJson(g.iterations)},
+          {"residual", toJson(g.residual)}, {"status", counts(g.status)}, {"method", counts(g.method)}};
+}
 
-  json.key("gains");
-  json.beginObject();
-  for (const auto& [channel, g] : m.gains) {
-    json.key(channel);
-    json.beginObject();
-    json.memberInt("count", g.count);
-    writeDistribution(json, "solve_us", g.solve_us);
-    writeDistribution(json, "iterations", g.iterations);
-    writeDistribution(json, "residual", g.residual);
-    writeCounts(json, "status", g.status);
-    writeCounts(json, "method", g.method);
-    json.endObject();
-  }
-  json.endObject();
+JsonDocument rateCommandJson(const RateCommandMetrics& r) {
+  return {{"count", r.count}, {"nominal_period_ms", r.nominal_period_ms}, {"period_ms", toJson(r.period_ms)},
+          {"jitter_ms", toJson(r.jitter_ms)}, {"utime_not_increasing", r.utime_not_increasing},
+          {"rate_saturated", r.rate_saturated}, {"thrust_saturated", r.thrust_saturated},
+          {"gains_status", counts(r.gains_status)}};
+}
 
-  json.key("rate_cmd");
-  json.beginObject();
-  for (const auto& [channel, r] : m.rate_commands) {
-    json.key(channel);
-    json.beginObject();
-    json.memberInt("count", r.count);
-    json.member("nominal_period_ms", r.nominal_period_ms);
-    writeDistribution(json, "period_ms", r.period_ms);
-    writeDistribution(json, "jitter_ms", r.jitter_ms);
-    json.memberInt("utime_not_increasing", r.utime_not_increasing);
-    json.memberInt("rate_saturated", r.rate_saturated);
-    json.memberInt("thrust_saturated", r.thrust_saturated);
-    writeCounts(json, "gains_status", r.gains_status);
-    json.endObject();
-  }
-  json.endObject();
+}  // namespace
 
-  json.key("heartbeat");
-  json.beginObject();
+void writeMetricsJson(std::ostream& out, const LogMetrics& m) {
+  JsonDocument document = {{"log", logJson(m)}, {"pacing", pacingJson(m)}};
+  JsonDocument& channels = document["channels"] = JsonDocument::object();
+  for (const ChannelMetrics& c : m.channels) channels[c.channel] = channelJson(c);
+  JsonDocument& gains = document["gains"] = JsonDocument::object();
+  for (const auto& [channel, g] : m.gains) gains[channel] = gainsJson(g);
+  JsonDocument& rate_cmd = document["rate_cmd"] = JsonDocument::object();
+  for (const auto& [channel, r] : m.rate_commands) rate_cmd[channel] = rateCommandJson(r);
+  JsonDocument& heartbeat = document["heartbeat"] = JsonDocument::object();
   for (const auto& [channel, processes] : m.heartbeats) {
-    json.key(channel);
-    json.beginObject();
-    for (const ProcessHeartbeatMetrics& p : processes) writeHeartbeat(json, p);
-    json.endObject();
+    JsonDocument& by_process = heartbeat[channel] = JsonDocument::object();
+    for (const ProcessHeartbeatMetrics& p : processes) by_process[p.process] = heartbeatJson(p);
   }
-  json.endObject();
-
-  json.endObject();
+  writeJsonDocument(out, document);
 }
 
 }  // namespace sdlqr::logger

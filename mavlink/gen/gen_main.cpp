@@ -11,12 +11,13 @@ using sdlqr::lcmgen::readFile;
 using sdlqr::lcmgen::writeIfChanged;
 
 int main(int argc, char** argv) {
-  if (argc < 3 || std::string(argv[1]) == "--help") {
-    std::cout << "usage: sdlqr_mavlink_gen OUT.hpp FILE.xml...\n\n"
+  const bool help = argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h");
+  if (argc < 3 || help) {
+    (help ? std::cout : std::cerr) << "usage: sdlqr_mavlink_gen OUT.hpp FILE.xml...\n\n"
                  "Writes the message structs, enums and message table of the MAVLink definitions in\n"
                  "FILE.xml (mavlink/definitions/; <include> is not followed: name every file) to OUT.hpp.\n"
                  "Exit code 2 with FILE:LINE on a definition it cannot read.\n";
-    return argc < 3 ? 2 : 0;
+    return help ? 0 : 2;
   }
   try {
     sdlqr::mavlinkgen::Definitions all;

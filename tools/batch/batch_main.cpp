@@ -1,4 +1,4 @@
-// sdlqr-batch: Monte Carlo batches of whole flights on the in-process closed loop (README, Batches).
+// sdlqr-batch: Monte Carlo batches of whole flights on the in-process closed loop (docs/batches.md, Batches).
 #include <unistd.h>
 
 #include <fstream>

@@ -1,6 +1,5 @@
 // sdlqr-compare: every controller law flies a benchmark of experiments and a speed sweep on the
-// in-process closed loop; writes report.md and the CSVs the plots read (README, Comparing the
-// controllers).
+// in-process closed loop; writes report.md and the CSVs the plots read (docs/controllers.md).
 #include <algorithm>
 #include <cstdio>
 #include <thread>

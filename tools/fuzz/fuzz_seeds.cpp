@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "message_types.hpp"
+#include "sdlqr/config/cli.hpp"
 #include "sdlqr/mavlink/frame.hpp"
 #include "sdlqr/mavlink/messages.hpp"
 
@@ -60,12 +61,18 @@ void writeMavlink(const std::string& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 2 && argc != 3) {
-    std::fprintf(stderr, "usage: fuzz_seeds DIR [MAVLINK_DIR]\n");
+  std::vector<std::string> folders;
+  ArgParser parser("fuzz_seeds",
+                   "Write the seed corpus of fuzz_messages into DIR and, given MAVLINK_DIR, fuzz_mavlink's\n"
+                   "(one frame of every MAVLink message) into it (existing folders).");
+  parser.allowPositional(&folders, "DIR [MAVLINK_DIR]");
+  parser.parseOrExit(argc, argv);
+  if (folders.size() != 1 && folders.size() != 2) {
+    std::fprintf(stderr, "fuzz_seeds: expected a folder DIR and an optional MAVLINK_DIR (see --help)\n");
     return 2;
   }
-  if (argc == 3) writeMavlink(argv[2]);
-  const std::string dir = argv[1];
+  if (folders.size() == 2) writeMavlink(folders[1]);
+  const std::string dir = folders.front();
   writeAll(dir, std::make_index_sequence<fuzz::kBusTypeCount>{});
   Trajectory trajectory;
   trajectory.samples.resize(3);

@@ -7,33 +7,13 @@
 #include <string>
 #include <vector>
 
+#include "sdlqr/config/cli.hpp"
 #include "sdlqr/soak/soak_check.hpp"
 #include "sdlqr/soak/soak_log.hpp"
 
 using namespace sdlqr;
 
 namespace {
-
-void usage(std::FILE* to) {
-  std::fprintf(to,
-               "usage: sdlqr-soakcheck --samples CSV --log LOG --airborne S [--window S]\n"
-               "  --samples CSV   /proc samples of the stack's processes (t,process,rss_kib,fds,cpu_seconds)\n"
-               "  --log LOG       the flight log\n"
-               "  --airborne S    simulation seconds the vehicle must have been airborne\n"
-               "  --window S      window length (default 60); the first window is the reference\n"
-               "  --expect A,B    processes that must have samples in every window (the launcher's)\n"
-               "Exit 0 when every check holds, 1 when one fails, 2 on bad arguments or input.\n");
-}
-
-double number(const std::string& key, const char* text) {
-  char* end = nullptr;
-  const double v = std::strtod(text, &end);
-  if (end == text || *end != '\0' || !(v > 0.0)) {
-    std::fprintf(stderr, "sdlqr-soakcheck: %s: expected a positive number, got '%s'\n", key.c_str(), text);
-    std::exit(2);
-  }
-  return v;
-}
 
 std::vector<std::string> names(const std::string& list) {
   std::vector<std::string> out;
@@ -44,38 +24,48 @@ std::vector<std::string> names(const std::string& list) {
   return out;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+// Options through the shared parser (CLI11): --help, one-line errors, exit code 2.
+struct SoakCheckCommand {
   std::string samples_path, log_path;
   std::vector<std::string> expected;
   double airborne = -1.0;
   soak::GrowthLimits limits;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      usage(stdout);
-      return 0;
-    }
-    if (i + 1 >= argc) {
-      std::fprintf(stderr, "sdlqr-soakcheck: %s needs a value (see --help)\n", arg.c_str());
-      return 2;
-    }
-    const char* value = argv[++i];
-    if (arg == "--samples") samples_path = value;
-    else if (arg == "--log") log_path = value;
-    else if (arg == "--airborne") airborne = number(arg, value);
-    else if (arg == "--window") limits.window_s = number(arg, value);
-    else if (arg == "--expect") expected = names(value);
-    else {
-      std::fprintf(stderr, "sdlqr-soakcheck: unknown option '%s' (see --help)\n", arg.c_str());
-      return 2;
-    }
-  }
-  if (samples_path.empty() || log_path.empty() || airborne < 0.0) {
-    std::fprintf(stderr, "sdlqr-soakcheck: --samples, --log and --airborne are required (see --help)\n");
-    return 2;
-  }
+};
+
+SoakCheckCommand parseCommand(int argc, const char* const* argv) {
+  SoakCheckCommand c;
+  std::string expect;
+  ArgParser parser("sdlqr-soakcheck",
+                   "Judge a soak flight (./sdlqr soak): the log is whole and long enough, and memory, file\n"
+                   "descriptors, CPU and bus latency do not grow against the first window of the run.");
+  parser.addOption("--samples", &c.samples_path, "CSV",
+                   "/proc samples of the stack's processes (t,process,rss_kib,fds,cpu_seconds); required");
+  parser.addOption("--log", &c.log_path, "LOG", "the flight log; required");
+  parser.addOption("--airborne", &c.airborne, "S", "simulation seconds the vehicle must have been airborne; required");
+  parser.addOption("--window", &c.limits.window_s, "S", "window length (default 60); the first window is the reference");
+  parser.addOption("--expect", &expect, "A,B", "processes that must have samples in every window (the launcher's)");
+  parser.setEpilog("exit codes: 0 every check holds, 1 one fails, 2 bad arguments or input");
+  parser.parseOrExit(argc, argv);
+  c.expected = names(expect);
+  const auto fail = [](const std::string& what) {
+    std::fprintf(stderr, "sdlqr-soakcheck: %s (see --help)\n", what.c_str());
+    std::exit(2);
+  };
+  if (c.samples_path.empty() || c.log_path.empty() || c.airborne < 0.0) fail("--samples, --log and --airborne are required");
+  if (!(c.airborne > 0.0)) fail("--airborne: expected a positive number");
+  if (!(c.limits.window_s > 0.0)) fail("--window: expected a positive number");
+  return c;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const SoakCheckCommand command = parseCommand(argc, argv);
+  const std::string& samples_path = command.samples_path;
+  const std::string& log_path = command.log_path;
+  const std::vector<std::string>& expected = command.expected;
+  const double airborne = command.airborne;
+  const soak::GrowthLimits& limits = command.limits;
   try {
     const logger::FlightLog log = logger::FlightLog::load(log_path);
     const soak::LogWholeness whole = soak::checkLogWhole(log);

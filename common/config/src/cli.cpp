@@ -1,127 +1,138 @@
 #include "sdlqr/config/cli.hpp"
 
 #include <cerrno>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <sstream>
 #include <stdexcept>
+
+#include <CLI/CLI.hpp>
 
 #include "sdlqr/config/config.hpp"
 
 namespace sdlqr {
 
-ArgParser::ArgParser(std::string program, std::string summary)
-    : program_(std::move(program)), summary_(std::move(summary)) {
-  entries_.push_back({"--help", "", "show this help and exit", nullptr});
+namespace {
+
+// "usage: program [options] METAVAR", then the description, the options and the epilog; the
+// positional words are named by the usage line alone.
+class Formatter final : public CLI::Formatter {
+ public:
+  explicit Formatter(std::string positional) : positional_(std::move(positional)) { column_width(26); }
+  std::string make_usage(const CLI::App* app, std::string name) const override {
+    (void)app;
+    return "usage: " + name + " [options]" + (positional_.empty() ? "" : " " + positional_) + "\n";
+  }
+  std::string make_positionals(const CLI::App*) const override { return {}; }
+  std::string make_help(const CLI::App* app, std::string name, CLI::AppFormatMode mode) const override {
+    const std::string footer = make_footer(app);
+    return make_usage(app, name) + "\n" + make_description(app) + make_groups(app, mode) +
+           (footer.empty() ? "" : "\n" + footer);
+  }
+
+ private:
+  std::string positional_;
+};
+
+// The caller's help texts may carry the indentation of the old formatter after each line break.
+std::string unindented(const std::string& help) {
+  std::string out;
+  for (size_t i = 0; i < help.size(); ++i) {
+    out.push_back(help[i]);
+    if (help[i] == '\n') {
+      while (i + 1 < help.size() && help[i + 1] == ' ') ++i;
+    }
+  }
+  return out;
 }
 
+std::string expectedFinite(const std::string& name, const std::string& v, double* out) {
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || errno != 0 || !std::isfinite(value)) {
+    return name + ": expected a finite number, got '" + v + "'";
+  }
+  *out = value;
+  return {};
+}
+
+std::string expectedInteger(const std::string& name, const std::string& v, long long min, long long max,
+                            long long* out) {
+  char* end = nullptr;
+  errno = 0;
+  const long long value = std::strtoll(v.c_str(), &end, 10);
+  if (v.empty() || *end != '\0' || errno != 0 || value < min || value > max) {
+    return name + ": expected an integer, got '" + v + "'";
+  }
+  *out = value;
+  return {};
+}
+
+}  // namespace
+
+ArgParser::ArgParser(std::string program, std::string summary)
+    : program_(std::move(program)), app_(std::make_unique<CLI::App>(std::move(summary), program_)) {
+  app_->option_defaults()->group("options")->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app_->set_help_flag("-h,--help", "show this help and exit")->group("options");
+  app_->formatter(std::make_shared<Formatter>(""));
+}
+
+ArgParser::~ArgParser() = default;
+
 void ArgParser::addFlag(const std::string& name, bool* out, const std::string& help) {
-  entries_.push_back({name, "", help, [out](const std::string&) {
-                        *out = true;
-                        return std::string();
-                      }});
+  app_->add_flag(name, *out, unindented(help));
 }
 
 void ArgParser::addOption(const std::string& name, std::string* out, const std::string& metavar,
                           const std::string& help) {
-  entries_.push_back({name, metavar, help, [out](const std::string& v) {
-                        *out = v;
-                        return std::string();
-                      }});
+  app_->add_option(name, *out, unindented(help))->type_name(metavar);
 }
 
 void ArgParser::addOption(const std::string& name, double* out, const std::string& metavar, const std::string& help) {
-  entries_.push_back({name, metavar, help, [out, name](const std::string& v) {
-                        char* end = nullptr;
-                        errno = 0;
-                        const double value = std::strtod(v.c_str(), &end);
-                        if (v.empty() || *end != '\0' || errno != 0 || !std::isfinite(value)) {
-                          return name + ": expected a finite number, got '" + v + "'";
-                        }
-                        *out = value;
-                        return std::string();
-                      }});
+  app_->add_option_function<std::string>(name, [name, out](const std::string& v) {
+        const std::string error = expectedFinite(name, v, out);
+        if (!error.empty()) throw CLI::ValidationError(error);
+      }, unindented(help))->type_name(metavar);
 }
 
 void ArgParser::addOption(const std::string& name, long long* out, const std::string& metavar,
                           const std::string& help) {
-  entries_.push_back({name, metavar, help, [out, name](const std::string& v) {
-                        char* end = nullptr;
-                        errno = 0;
-                        const long long value = std::strtoll(v.c_str(), &end, 10);
-                        if (v.empty() || *end != '\0' || errno != 0) {
-                          return name + ": expected an integer, got '" + v + "'";
-                        }
-                        *out = value;
-                        return std::string();
-                      }});
+  app_->add_option_function<std::string>(name, [name, out](const std::string& v) {
+        const std::string error = expectedInteger(name, v, LLONG_MIN, LLONG_MAX, out);
+        if (!error.empty()) throw CLI::ValidationError(error);
+      }, unindented(help))->type_name(metavar);
 }
 
 void ArgParser::addOption(const std::string& name, int* out, const std::string& metavar, const std::string& help) {
-  entries_.push_back({name, metavar, help, [out, name](const std::string& v) {
-                        char* end = nullptr;
-                        errno = 0;
-                        const long value = std::strtol(v.c_str(), &end, 10);
-                        if (v.empty() || *end != '\0' || errno != 0 || value < -2147483647L || value > 2147483647L) {
-                          return name + ": expected an integer, got '" + v + "'";
-                        }
-                        *out = static_cast<int>(value);
-                        return std::string();
-                      }});
+  app_->add_option_function<std::string>(name, [name, out](const std::string& v) {
+        long long value = 0;
+        const std::string error = expectedInteger(name, v, INT_MIN, INT_MAX, &value);
+        if (!error.empty()) throw CLI::ValidationError(error);
+        *out = static_cast<int>(value);
+      }, unindented(help))->type_name(metavar);
 }
 
-std::string ArgParser::usage() const {
-  std::ostringstream out;
-  out << "usage: " << program_ << " [options]";
-  if (positional_) out << " " << positional_metavar_;
-  out << "\n\n" << summary_ << "\n\noptions:\n";
-  for (const Entry& e : entries_) {
-    std::string left = "  " + e.name + (e.metavar.empty() ? "" : " " + e.metavar);
-    if (left.size() < 26) left.resize(26, ' ');
-    else left += "\n" + std::string(26, ' ');
-    out << left << e.help << "\n";
-  }
-  if (!epilog_.empty()) out << "\n" << epilog_ << "\n";
-  return out.str();
+void ArgParser::setEpilog(const std::string& epilog) { app_->footer(epilog); }
+
+void ArgParser::allowPositional(std::vector<std::string>* out, const std::string& metavar) {
+  app_->add_option("words", *out)->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app_->formatter(std::make_shared<Formatter>(metavar));
 }
+
+std::string ArgParser::usage() const { return app_->help(); }
 
 std::string ArgParser::parse(int argc, const char* const* argv, bool* help_requested) const {
   *help_requested = false;
-  for (int i = 1; i < argc; ++i) {
-    std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      *help_requested = true;
-      return {};
-    }
-    if (arg.rfind("--", 0) != 0 || arg == "--") {
-      if (positional_ && arg != "--") {
-        positional_->push_back(arg);
-        continue;
-      }
-      return "unexpected argument '" + arg + "' (see --help)";
-    }
-    std::string value;
-    bool has_inline_value = false;
-    const auto eq = arg.find('=');
-    if (eq != std::string::npos) {
-      value = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-      has_inline_value = true;
-    }
-    const Entry* entry = nullptr;
-    for (const Entry& e : entries_) {
-      if (e.name == arg) entry = &e;
-    }
-    if (!entry || !entry->set) return "unknown option '" + arg + "' (see --help)";
-    if (entry->metavar.empty()) {
-      if (has_inline_value) return arg + " takes no value";
-    } else if (!has_inline_value) {
-      if (i + 1 >= argc) return arg + " needs a value " + entry->metavar;
-      value = argv[++i];
-    }
-    const std::string error = entry->set(value);
-    if (!error.empty()) return error;
+  try {
+    app_->parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    *help_requested = true;
+  } catch (const CLI::ExtrasError& e) {
+    return std::string(e.what()) + " (see --help)";
+  } catch (const CLI::ParseError& e) {
+    return e.what();
   }
   return {};
 }
@@ -153,7 +164,7 @@ void addProcessOptions(ArgParser& parser, ProcessOptions* options) {
 void addBusLayoutOption(ArgParser& parser, ProcessOptions* options) {
   parser.addOption("--bus-layout", &options->bus_layout, "single|split",
                    "split (default): high-rate channels on ports of their own above the --lcm-url port;\n"
-                   "single: every channel on the --lcm-url port (README, Bus layout)");
+                   "single: every channel on the --lcm-url port (docs/architecture.md §2)");
 }
 
 int runMain(const std::string& program, const std::function<int()>& body) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A signed bus keeps out a process without the key (README, Signed bus): the real executables fly
+# A signed bus keeps out a process without the key (docs/hosts-and-signing.md, Signed bus): the real executables fly
 # signed_hover over real multicast with --signed while rogue_rate_cmd, started without
 # SDLQR_BUS_KEY, publishes well-formed, in-range, newer RATE_CMD (thrust 0) for 1.5 s mid-hover.
 # The bodyrate loop must reject them (reject.rate_cmd.unsigned counted in its HEARTBEAT) and the

@@ -1,4 +1,4 @@
-// A controller restarted mid-flight (ARCHITECTURE.md §7: "a process restarted mid-flight rejoins"): its
+// A controller restarted mid-flight (docs/architecture.md §7: "a process restarted mid-flight rejoins"): its
 // first estimate shows the vehicle airborne, so it holds there instead of idling, and the
 // mission's re-sent TAKEOFF / GOTO (same seq, fresh utime) restores the setpoint. Running
 // controllers ignore the re-sends.

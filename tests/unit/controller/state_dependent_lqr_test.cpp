@@ -1,4 +1,4 @@
-// The 100 Hz controller: tick scheduling in simulation time, gain freshness (ARCHITECTURE.md
+// The 100 Hz controller: tick scheduling in simulation time, gain freshness (docs/architecture.md
 // §4, §7: keep the last valid K, flag it stale, fall back to a hover K after a timeout),
 // parameter updates.
 

@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "sdlqr/logger/csv.hpp"
-#include "sdlqr/logger/json_value.hpp"
+#include "sdlqr/logger/json_document.hpp"
 
 namespace sdlqr::logger {
 namespace {
@@ -131,30 +131,32 @@ TEST(Csv, VariableArraysBecomeOneJsonCell) {
   ASSERT_TRUE(readCsvRecord(in, &cells, &error));
   ASSERT_EQ(cells.size(), 4u);
   EXPECT_EQ(cells[1], "[[0.5,Infinity],[NaN,-2]]");
-  JsonValue grid;
+  JsonDocument grid;
   ASSERT_TRUE(parseJson(cells[1], &grid, &error)) << error;
   ASSERT_TRUE(checkArray(grid, 2, "grid", &error));
-  EXPECT_EQ(grid.items[0].items[0].number, 0.5);
-  EXPECT_TRUE(std::isinf(grid.items[0].items[1].number));
-  EXPECT_TRUE(std::isnan(grid.items[1].items[0].number));
-  JsonValue names;
+  EXPECT_EQ(grid[0][0].get<double>(), 0.5);
+  EXPECT_TRUE(std::isinf(grid[0][1].get<double>()));
+  EXPECT_GT(grid[0][1].get<double>(), 0.0);
+  EXPECT_TRUE(std::isnan(grid[1][0].get<double>()));
+  EXPECT_EQ(numberText(grid[1][1]), "-2");
+  JsonDocument names;
   ASSERT_TRUE(parseJson(cells[2], &names, &error)) << error;
-  ASSERT_EQ(names.items.size(), 2u);
-  EXPECT_EQ(names.items[1].text, "quote\" comma, newline\n");
-  JsonValue empty;
+  ASSERT_EQ(names.size(), 2u);
+  EXPECT_EQ(names[1].get<std::string>(), "quote\" comma, newline\n");
+  JsonDocument empty;
   ASSERT_TRUE(parseJson(cells[3], &empty, &error));
-  EXPECT_TRUE(empty.isArray());
-  EXPECT_TRUE(empty.items.empty());
+  EXPECT_TRUE(empty.is_array());
+  EXPECT_TRUE(empty.empty());
 }
 
 TEST(Json, ReadsObjectsAndReportsErrors) {
-  JsonValue v;
+  JsonDocument v;
   std::string error;
-  ASSERT_TRUE(parseJson(R"({"a": {"b": [1, 2.5e3, -0]}, "s": "\u00e9\n", "t": true, "n": null})", &v, &error)) << error;
-  ASSERT_NE(v.find("a"), nullptr);
-  EXPECT_EQ(v.find("a")->find("b")->items[1].number, 2500.0);
-  EXPECT_EQ(v.find("s")->text, "\xC3\xA9\n");
-  EXPECT_EQ(v.find("missing"), nullptr);
+  ASSERT_TRUE(parseJson(R"({"a": {"b": [1, 2.5e3, -0]}, "s": "\u00e9\n NaN", "t": true, "n": null})", &v, &error)) << error;
+  ASSERT_TRUE(v.contains("a"));
+  EXPECT_EQ(v["a"]["b"][1].get<double>(), 2500.0);
+  EXPECT_EQ(v["s"].get<std::string>(), "\xC3\xA9\n NaN");  // NaN inside a string stays text
+  EXPECT_FALSE(v.contains("missing"));
   EXPECT_FALSE(parseJson("[1, 2", &v, &error));
   EXPECT_FALSE(parseJson("[1] x", &v, &error));
   EXPECT_FALSE(parseJson("\"open", &v, &error));

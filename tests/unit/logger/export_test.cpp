@@ -171,18 +171,18 @@ TEST(Export, ColumnsHoldTheFieldsTheyName) {
   EXPECT_EQ(cell("GAINS.csv", "iterations"), "13");
   EXPECT_EQ(cell("HEARTBEAT.csv", "process"), "sdlqr-gains");
   EXPECT_EQ(cell("HEARTBEAT.csv", "last_error"), heartbeat.last_error);
-  JsonValue names;
-  JsonValue values;
+  JsonDocument names;
+  JsonDocument values;
   std::string error;
   ASSERT_TRUE(parseJson(cell("HEARTBEAT.csv", "counter_names[num_counters]"), &names, &error)) << error;
   ASSERT_TRUE(parseJson(cell("HEARTBEAT.csv", "counter_values[num_counters]"), &values, &error)) << error;
-  ASSERT_EQ(names.items.size(), 2u);
-  EXPECT_EQ(names.items[1].text, "gains.fallback");
-  EXPECT_EQ(values.items[1].number, -4.0);
-  JsonValue x;
+  ASSERT_EQ(names.size(), 2u);
+  EXPECT_EQ(names[1].get<std::string>(), "gains.fallback");
+  EXPECT_EQ(values[1].get<double>(), -4.0);
+  JsonDocument x;
   ASSERT_TRUE(parseJson(cell("TRAJECTORY.csv", "x[num_samples][10]"), &x, &error)) << error;
-  ASSERT_EQ(x.items.size(), 2u);
-  EXPECT_EQ(x.items[1].items[7].number, 17.0);
+  ASSERT_EQ(x.size(), 2u);
+  EXPECT_EQ(x[1][7].get<double>(), 17.0);
   EXPECT_EQ(number("TRAJECTORY.csv", "num_samples"), 2.0);
 }
 
@@ -317,17 +317,16 @@ TEST(Export, DecodeFailuresAndForeignChannelsAreCountedNotExported) {
   EXPECT_TRUE(foreign->csv_path.empty());
   EXPECT_TRUE(fs::exists(dir / "out" / "QUAD2" / "STATE_EST.csv"));
 
-  JsonValue json;
+  JsonDocument json;
   std::string error;
   ASSERT_TRUE(parseJson(test::readText(result.metrics_path), &json, &error)) << error;
-  const JsonValue* imu_metrics = json.find("channels")->find("QUAD1/IMU");
-  ASSERT_NE(imu_metrics, nullptr);
-  EXPECT_EQ(imu_metrics->find("decode_failures")->number, 1.0);
-  EXPECT_EQ(imu_metrics->find("seq")->find("lost")->number, 0.0);
-  EXPECT_DOUBLE_EQ(imu_metrics->find("sim")->find("rate_hz")->number, 1000.0);
-  EXPECT_EQ(json.find("gains")->find("QUAD1/GAINS")->find("count")->number, 2.0);
-  EXPECT_EQ(json.find("heartbeat")->find("QUAD1/HEARTBEAT")->find("sdlqr-controller")->find("last")->find("state")->text,
-            "DEGRADED");
+  ASSERT_TRUE(json["channels"].contains("QUAD1/IMU"));
+  const JsonDocument& imu_metrics = json["channels"]["QUAD1/IMU"];
+  EXPECT_EQ(imu_metrics["decode_failures"].get<double>(), 1.0);
+  EXPECT_EQ(imu_metrics["seq"]["lost"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(imu_metrics["sim"]["rate_hz"].get<double>(), 1000.0);
+  EXPECT_EQ(json["gains"]["QUAD1/GAINS"]["count"].get<double>(), 2.0);
+  EXPECT_EQ(json["heartbeat"]["QUAD1/HEARTBEAT"]["sdlqr-controller"]["last"]["state"].get<std::string>(), "DEGRADED");
 }
 
 int64_t eventBytes(const RawEvent& e) { return 28 + static_cast<int64_t>(e.channel.size() + e.bytes.size()); }

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "sdlqr/logger/json_value.hpp"
+#include "sdlqr/logger/json_document.hpp"
 #include "sdlqr/logger/metrics.hpp"
 #include "sdlqr/logger/statistics.hpp"
 
@@ -178,23 +178,22 @@ TEST(Metrics, JsonIsValidWithStableOrder) {
   const LogMetrics metrics = computeLogMetrics(input, MetricsOptions{});
   std::ostringstream out;
   writeMetricsJson(out, metrics);
-  JsonValue json;
+  JsonDocument json;
   std::string error;
   ASSERT_TRUE(parseJson(out.str(), &json, &error)) << error << "\n" << out.str();
   std::vector<std::string> top;
-  for (const auto& member : json.members) top.push_back(member.first);
+  for (const auto& member : json.items()) top.push_back(member.key());
   EXPECT_EQ(top, (std::vector<std::string>{"log", "pacing", "channels", "gains", "rate_cmd", "heartbeat"}));
-  const JsonValue* channels = json.find("channels");
-  ASSERT_NE(channels, nullptr);
-  ASSERT_EQ(channels->members.size(), 3u);
-  EXPECT_EQ(channels->members[0].first, "A/IMU");
-  EXPECT_EQ(channels->members[1].first, "B");
-  EXPECT_EQ(channels->members[2].first, "OTHER");
-  EXPECT_EQ(channels->find("OTHER")->find("type")->kind, JsonValue::Kind::kNull);
+  ASSERT_TRUE(json.contains("channels"));
+  const JsonDocument& channels = json["channels"];
+  std::vector<std::string> names;
+  for (const auto& member : channels.items()) names.push_back(member.key());
+  EXPECT_EQ(names, (std::vector<std::string>{"A/IMU", "B", "OTHER"}));
+  EXPECT_TRUE(channels["OTHER"]["type"].is_null());
   // One event: no rate -> null, not NaN.
-  EXPECT_EQ(channels->find("B")->find("receive")->find("rate_hz")->kind, JsonValue::Kind::kNull);
-  EXPECT_EQ(json.find("log")->find("path")->text, input.log.path);
-  EXPECT_EQ(json.find("pacing")->find("origin_channel")->text, "B");
+  EXPECT_TRUE(channels["B"]["receive"]["rate_hz"].is_null());
+  EXPECT_EQ(json["log"]["path"].get<std::string>(), input.log.path);
+  EXPECT_EQ(json["pacing"]["origin_channel"].get<std::string>(), "B");
   // Writing twice gives the same bytes.
   std::ostringstream again;
   writeMetricsJson(again, computeLogMetrics(input, MetricsOptions{}));

@@ -5,30 +5,16 @@
 
 #include "sdlqr/analysis/criteria.hpp"
 #include "sdlqr/analysis/flight_report.hpp"
-#include "sdlqr/logger/json_writer.hpp"
+#include "sdlqr/logger/json_document.hpp"
 
 namespace sdlqr::analysis {
 
 namespace {
 
-void writeDistribution(logger::JsonWriter& json, const char* name, const logger::Distribution& d) {
-  json.key(name);
-  json.beginObject();
-  json.memberInt("count", d.count);
-  json.member("mean", d.mean);
-  json.member("min", d.min);
-  json.member("median", d.median);
-  json.member("p99", d.p99);
-  json.member("max", d.max);
-  json.endObject();
-}
+using logger::JsonDocument;
+using logger::toJson;
 
-void writeVec3(logger::JsonWriter& json, const char* name, const Vec3& v) {
-  json.key(name);
-  json.beginArray();
-  for (int i = 0; i < 3; ++i) json.number(v[i]);
-  json.endArray();
-}
+JsonDocument vec3(const Vec3& v) { return JsonDocument::array({v[0], v[1], v[2]}); }
 
 std::string format(const char* fmt, double value) {
   if (!std::isfinite(value)) return "never";
@@ -49,251 +35,152 @@ const char* disturbanceKind(const Disturbance& d) {
   return d.force.isZero() ? "torque" : "force+torque";
 }
 
-void writeChecks(logger::JsonWriter& json, const FlightReport& r) {
-  json.key("checks");
-  json.beginArray();
-  for (const Check& c : r.checks) {
-    json.beginObject();
-    json.member("name", c.name);
-    json.member("key", c.key);
-    json.member("window", c.window);
-    json.member("description", c.description);
-    json.member("unit", c.unit);
-    json.member("value", c.value);
-    json.member("limit", c.limit);
-    json.member("rule", c.upper ? "<=" : ">=");
-    json.memberBool("pass", c.pass);
-    if (!c.note.empty()) json.member("note", c.note);
-    json.endObject();
-  }
-  json.endArray();
-  json.key("not_judged");
-  json.beginArray();
-  for (const NotJudged& n : r.not_judged) {
-    json.beginObject();
-    json.member("key", n.key);
-    json.member("reason", n.reason);
-    json.endObject();
-  }
-  json.endArray();
+JsonDocument checkJson(const Check& c) {
+  JsonDocument out = {{"name", c.name}, {"key", c.key}, {"window", c.window}, {"description", c.description},
+                      {"unit", c.unit}, {"value", c.value}, {"limit", c.limit}, {"rule", c.upper ? "<=" : ">="},
+                      {"pass", c.pass}};
+  if (!c.note.empty()) out["note"] = c.note;
+  return out;
+}
+
+void addChecks(JsonDocument& json, const FlightReport& r) {
+  JsonDocument& checks = json["checks"] = JsonDocument::array();
+  for (const Check& c : r.checks) checks.push_back(checkJson(c));
+  JsonDocument& not_judged = json["not_judged"] = JsonDocument::array();
+  for (const NotJudged& n : r.not_judged) not_judged.push_back({{"key", n.key}, {"reason", n.reason}});
 }
 
 // The scenario's events as the log had them, and the touchdown after each LAND.
-void writeEvents(logger::JsonWriter& json, const FlightReport& r) {
-  json.key("events");
-  json.beginArray();
+void addEvents(JsonDocument& json, const FlightReport& r) {
+  JsonDocument& events = json["events"] = JsonDocument::array();
   for (const ExpectedEvent& e : r.events) {
-    json.beginObject();
-    json.member("label", e.label);
-    json.member("channel", e.channel);
-    json.member("at_s", e.at);
-    json.memberBool("in_log", e.found());
-    json.member("seen_s", e.seen);
-    json.endObject();
+    events.push_back({{"label", e.label}, {"channel", e.channel}, {"at_s", e.at}, {"in_log", e.found()},
+                      {"seen_s", e.seen}});
   }
-  json.endArray();
-  json.key("landings");
-  json.beginArray();
+  JsonDocument& landings = json["landings"] = JsonDocument::array();
   for (const Landing& l : r.landings) {
-    json.beginObject();
-    json.member("label", l.label);
-    json.member("start_s", l.start);
-    json.member("touchdown_s", l.touchdown);
-    json.member("touchdown_speed_mps", l.touchdown_speed);
-    json.endObject();
+    landings.push_back({{"label", l.label}, {"start_s", l.start}, {"touchdown_s", l.touchdown},
+                        {"touchdown_speed_mps", l.touchdown_speed}});
   }
-  json.endArray();
 }
 
-void writeCalibration(logger::JsonWriter& json, const FlightReport& r) {
+void addCalibration(JsonDocument& json, const FlightReport& r) {
   if (!r.calibration) return;
   const calibrate::Calibration& c = *r.calibration;
-  json.key("calibration");
-  json.beginObject();
-  json.member("echo_rate_hz", c.echo_rate_hz);
-  json.member("rtt_median_us", c.rtt_median_us);
-  json.member("rtt_p99_us", c.rtt_p99_us);
-  json.member("cpu_percent", c.cpu_percent);
-  json.member("host", c.host);
-  json.member("date", c.date);
-  json.endObject();
-  json.member("stack_cpu_relative", r.stack_cpu_relative);
-  json.member("state_to_command_relative", r.state_to_command_relative);
+  json["calibration"] = {{"echo_rate_hz", c.echo_rate_hz}, {"rtt_median_us", c.rtt_median_us},
+                         {"rtt_p99_us", c.rtt_p99_us}, {"cpu_percent", c.cpu_percent}, {"host", c.host},
+                         {"date", c.date}};
+  json["stack_cpu_relative"] = r.stack_cpu_relative;
+  json["state_to_command_relative"] = r.state_to_command_relative;
+}
+
+JsonDocument setpointJson(const SetpointWindow& w) {
+  return {{"label", w.label}, {"jump", w.is_jump}, {"start_s", w.start}, {"end_s", w.end}, {"from_m", vec3(w.from)},
+          {"to_m", vec3(w.to)}, {"size_m", w.size}, {"settle_time_s", w.settle_time}, {"overshoot", w.overshoot},
+          {"steady_error_m", w.steady_error}, {"max_error_after_settle_m", w.max_error_after_settle}};
+}
+
+JsonDocument pullJson(const PullWindow& p) {
+  JsonDocument out = {{"label", p.label}, {"start_s", p.start}, {"release_s", p.release},
+                      {"kind", disturbanceKind(p.disturbance)}, {"force_n", vec3(p.disturbance.force)},
+                      {"torque_nm", vec3(p.disturbance.torque)}};
+  if (p.disturbance.mode == DisturbanceMode::kHold) {
+    out["hold_position_m"] = vec3(p.disturbance.hold_position);
+    out["hold_stiffness_n_per_m"] = p.disturbance.hold_stiffness;
+  }
+  out["setpoint_m"] = vec3(p.setpoint);
+  out["max_deviation_m"] = p.max_deviation;
+  out["return_time_s"] = p.return_time;
+  out["return_overshoot"] = p.return_overshoot;
+  return out;
+}
+
+JsonDocument trajectoryJson(const PathTrackingReport& t) {
+  JsonDocument out = {
+      {"label", t.label}, {"trajectory_seq", t.trajectory_seq},
+      {"tracking", t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial"}, {"closed", t.closed},
+      {"samples", t.samples}, {"path_length_m", t.path_length}, {"duration_s", t.duration}, {"start_s", t.start},
+      {"end_s", t.end}, {"completed", t.completed}, {"completion_time_s", t.completion_time},
+      {"remaining_m", t.remaining}, {"laps", t.laps}, {"truth_samples", t.truth_samples},
+      {"path_error_rms_m", t.path_error_rms}, {"path_error_max_m", t.path_error_max},
+      {"path_error_rms_axis_m", vec3(t.path_error_rms_axis)}, {"path_error_max_axis_m", vec3(t.path_error_max_axis)},
+      {"time_error_rms_m", t.time_error_rms}, {"time_error_max_m", t.time_error_max},
+      {"samples_passed", t.samples_passed}, {"samples_skipped", static_cast<int64_t>(t.skipped.size())},
+      {"worst_visit_m", t.worst_visit}};
+  JsonDocument& skipped = out["skipped"] = JsonDocument::array();
+  for (const SkippedSample& k : t.skipped) {
+    skipped.push_back({{"lap", k.lap}, {"index", k.index}, {"arc_m", k.arc}, {"closest_m", k.closest}});
+  }
+  out["commands"] = t.commands;
+  out["saturation_percent"] = t.saturation_percent;
+  out["rate_saturation_percent"] = t.rate_saturation_percent;
+  out["thrust_saturation_percent"] = t.thrust_saturation_percent;
+  out["thrust_min"] = t.thrust_min;
+  out["thrust_max"] = t.thrust_max;
+  out["thrust_violations"] = t.thrust_violations;
+  JsonDocument& pulls = out["pulls"] = JsonDocument::array();
+  for (const PathPull& p : t.pulls) {
+    pulls.push_back({{"start_s", p.start}, {"release_s", p.release}, {"max_distance_m", p.max_distance},
+                     {"distance_at_release_m", p.distance_at_release}, {"return_time_s", p.return_time}});
+  }
+  return out;
+}
+
+// Figures of the machine: rates, the solver, timing, saturation, each process's load and losses.
+void addMachineFigures(JsonDocument& json, const FlightReport& r) {
+  json["rates_hz"] = {{"IMU", r.imu_rate_hz}, {"STATE_EST", r.state_est_rate_hz}, {"RATE_CMD", r.rate_cmd_rate_hz},
+                      {"GAINS", r.gains_rate_hz}};
+  json["gains_solve_us"] = toJson(r.solve_us);
+  json["gains_iterations"] = toJson(r.iterations);
+  json["rate_cmd_period_ms"] = toJson(r.rate_cmd_period_ms);
+  json["rate_cmd_jitter_ms"] = toJson(r.rate_cmd_jitter_ms);
+  json["state_est_to_rate_cmd_us"] = toJson(r.state_to_command_us);
+  json["rate_cmd_wall_jitter_us"] = toJson(r.rate_cmd_wall_jitter_us);
+  json["saturation"] = {{"rate_commands", r.saturation.commands},
+                        {"thrust_demand_outside", r.saturation.thrust_demand_outside},
+                        {"thrust_demand_min", r.saturation.thrust_demand_min},
+                        {"thrust_demand_max", r.saturation.thrust_demand_max},
+                        {"motor_commands", r.saturation.motor_commands},
+                        {"rotor_at_limit", r.saturation.rotor_at_limit}};
+  JsonDocument& processes = json["processes"] = JsonDocument::array();
+  for (const ProcessLoad& p : r.processes) {
+    processes.push_back({{"process", p.process}, {"cpu_percent_mean", p.cpu_percent_mean},
+                         {"cpu_percent_max", p.cpu_percent_max}, {"rejected", p.rejected}, {"dropped", p.dropped},
+                         {"deadline_misses", p.deadline_misses}, {"errors", p.errors}});
+  }
+  JsonDocument& loss = json["message_loss"] = JsonDocument::array();
+  for (const ChannelLoss& l : r.message_loss) {
+    loss.push_back({{"process", l.process}, {"channel", l.channel}, {"lost", l.lost},
+                    {"queue_dropped", l.queue_dropped}});
+  }
 }
 
 }  // namespace
 
 void writeJson(const FlightReport& r, std::ostream& out) {
-  logger::JsonWriter json(out);
-  json.beginObject();
-  json.member("scenario", r.scenario);
-  json.memberBool("passed", r.passed());
-  json.member("flight_start_s", r.flight_start);
-  json.member("flight_end_s", r.flight_end);
-  writeEvents(json, r);
-  json.key("setpoints");
-  json.beginArray();
-  for (const SetpointWindow& w : r.setpoints) {
-    json.beginObject();
-    json.member("label", w.label);
-    json.memberBool("jump", w.is_jump);
-    json.member("start_s", w.start);
-    json.member("end_s", w.end);
-    writeVec3(json, "from_m", w.from);
-    writeVec3(json, "to_m", w.to);
-    json.member("size_m", w.size);
-    json.member("settle_time_s", w.settle_time);
-    json.member("overshoot", w.overshoot);
-    json.member("steady_error_m", w.steady_error);
-    json.member("max_error_after_settle_m", w.max_error_after_settle);
-    json.endObject();
-  }
-  json.endArray();
-  json.key("pulls");
-  json.beginArray();
-  for (const PullWindow& p : r.pulls) {
-    json.beginObject();
-    json.member("label", p.label);
-    json.member("start_s", p.start);
-    json.member("release_s", p.release);
-    json.member("kind", disturbanceKind(p.disturbance));
-    writeVec3(json, "force_n", p.disturbance.force);
-    writeVec3(json, "torque_nm", p.disturbance.torque);
-    if (p.disturbance.mode == DisturbanceMode::kHold) {
-      writeVec3(json, "hold_position_m", p.disturbance.hold_position);
-      json.member("hold_stiffness_n_per_m", p.disturbance.hold_stiffness);
-    }
-    writeVec3(json, "setpoint_m", p.setpoint);
-    json.member("max_deviation_m", p.max_deviation);
-    json.member("return_time_s", p.return_time);
-    json.member("return_overshoot", p.return_overshoot);
-    json.endObject();
-  }
-  json.endArray();
-  json.key("trajectories");
-  json.beginArray();
-  for (const PathTrackingReport& t : r.trajectories) {
-    json.beginObject();
-    json.member("label", t.label);
-    json.memberInt("trajectory_seq", t.trajectory_seq);
-    json.member("tracking", t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial");
-    json.memberBool("closed", t.closed);
-    json.memberInt("samples", t.samples);
-    json.member("path_length_m", t.path_length);
-    json.member("duration_s", t.duration);
-    json.member("start_s", t.start);
-    json.member("end_s", t.end);
-    json.memberBool("completed", t.completed);
-    json.member("completion_time_s", t.completion_time);
-    json.member("remaining_m", t.remaining);
-    json.member("laps", t.laps);
-    json.memberInt("truth_samples", t.truth_samples);
-    json.member("path_error_rms_m", t.path_error_rms);
-    json.member("path_error_max_m", t.path_error_max);
-    writeVec3(json, "path_error_rms_axis_m", t.path_error_rms_axis);
-    writeVec3(json, "path_error_max_axis_m", t.path_error_max_axis);
-    json.member("time_error_rms_m", t.time_error_rms);
-    json.member("time_error_max_m", t.time_error_max);
-    json.memberInt("samples_passed", t.samples_passed);
-    json.memberInt("samples_skipped", static_cast<int64_t>(t.skipped.size()));
-    json.member("worst_visit_m", t.worst_visit);
-    json.key("skipped");
-    json.beginArray();
-    for (const SkippedSample& k : t.skipped) {
-      json.beginObject();
-      json.memberInt("lap", k.lap);
-      json.memberInt("index", k.index);
-      json.member("arc_m", k.arc);
-      json.member("closest_m", k.closest);
-      json.endObject();
-    }
-    json.endArray();
-    json.memberInt("commands", t.commands);
-    json.member("saturation_percent", t.saturation_percent);
-    json.member("rate_saturation_percent", t.rate_saturation_percent);
-    json.member("thrust_saturation_percent", t.thrust_saturation_percent);
-    json.member("thrust_min", t.thrust_min);
-    json.member("thrust_max", t.thrust_max);
-    json.memberInt("thrust_violations", t.thrust_violations);
-    json.key("pulls");
-    json.beginArray();
-    for (const PathPull& p : t.pulls) {
-      json.beginObject();
-      json.member("start_s", p.start);
-      json.member("release_s", p.release);
-      json.member("max_distance_m", p.max_distance);
-      json.member("distance_at_release_m", p.distance_at_release);
-      json.member("return_time_s", p.return_time);
-      json.endObject();
-    }
-    json.endArray();
-    json.endObject();
-  }
-  json.endArray();
-  json.key("estimator");
-  json.beginObject();
-  json.memberInt("hover_samples", r.estimator.samples);
-  json.member("position_rms_m", r.estimator.position_rms);
-  json.member("attitude_rms_deg", r.estimator.attitude_rms_deg);
-  json.member("position_rms_all_m", r.estimator.position_rms_all);
-  json.member("attitude_rms_all_deg", r.estimator.attitude_rms_deg_all);
-  json.member("position_max_all_m", r.estimator.position_max_all);
-  json.endObject();
-  json.key("rates_hz");
-  json.beginObject();
-  json.member("IMU", r.imu_rate_hz);
-  json.member("STATE_EST", r.state_est_rate_hz);
-  json.member("RATE_CMD", r.rate_cmd_rate_hz);
-  json.member("GAINS", r.gains_rate_hz);
-  json.endObject();
-  writeDistribution(json, "gains_solve_us", r.solve_us);
-  writeDistribution(json, "gains_iterations", r.iterations);
-  writeDistribution(json, "rate_cmd_period_ms", r.rate_cmd_period_ms);
-  writeDistribution(json, "rate_cmd_jitter_ms", r.rate_cmd_jitter_ms);
-  writeDistribution(json, "state_est_to_rate_cmd_us", r.state_to_command_us);
-  writeDistribution(json, "rate_cmd_wall_jitter_us", r.rate_cmd_wall_jitter_us);
-  json.key("saturation");
-  json.beginObject();
-  json.memberInt("rate_commands", r.saturation.commands);
-  json.memberInt("thrust_demand_outside", r.saturation.thrust_demand_outside);
-  json.member("thrust_demand_min", r.saturation.thrust_demand_min);
-  json.member("thrust_demand_max", r.saturation.thrust_demand_max);
-  json.memberInt("motor_commands", r.saturation.motor_commands);
-  json.memberInt("rotor_at_limit", r.saturation.rotor_at_limit);
-  json.endObject();
-  json.key("processes");
-  json.beginArray();
-  for (const ProcessLoad& p : r.processes) {
-    json.beginObject();
-    json.member("process", p.process);
-    json.member("cpu_percent_mean", p.cpu_percent_mean);
-    json.member("cpu_percent_max", p.cpu_percent_max);
-    json.memberInt("rejected", p.rejected);
-    json.memberInt("dropped", p.dropped);
-    json.memberInt("deadline_misses", p.deadline_misses);
-    json.memberInt("errors", p.errors);
-    json.endObject();
-  }
-  json.endArray();
-  json.key("message_loss");
-  json.beginArray();
-  for (const ChannelLoss& l : r.message_loss) {
-    json.beginObject();
-    json.member("process", l.process);
-    json.member("channel", l.channel);
-    json.memberInt("lost", l.lost);
-    json.memberInt("queue_dropped", l.queue_dropped);
-    json.endObject();
-  }
-  json.endArray();
-  json.member("stack_cpu_percent", r.stack_cpu_percent);
-  writeCalibration(json, r);
-  json.memberInt("nonfinite_messages", r.nonfinite);
-  json.member("max_tilt_deg", r.max_tilt_deg);
-  json.member("touchdown_speed_mps", r.touchdown_speed);
-  json.memberBool("crashed", r.crashed);
-  writeChecks(json, r);
-  json.endObject();
+  JsonDocument json = {{"scenario", r.scenario}, {"passed", r.passed()}, {"flight_start_s", r.flight_start},
+                       {"flight_end_s", r.flight_end}};
+  addEvents(json, r);
+  JsonDocument& setpoints = json["setpoints"] = JsonDocument::array();
+  for (const SetpointWindow& w : r.setpoints) setpoints.push_back(setpointJson(w));
+  JsonDocument& pulls = json["pulls"] = JsonDocument::array();
+  for (const PullWindow& p : r.pulls) pulls.push_back(pullJson(p));
+  JsonDocument& trajectories = json["trajectories"] = JsonDocument::array();
+  for (const PathTrackingReport& t : r.trajectories) trajectories.push_back(trajectoryJson(t));
+  json["estimator"] = {{"hover_samples", r.estimator.samples}, {"position_rms_m", r.estimator.position_rms},
+                       {"attitude_rms_deg", r.estimator.attitude_rms_deg},
+                       {"position_rms_all_m", r.estimator.position_rms_all},
+                       {"attitude_rms_all_deg", r.estimator.attitude_rms_deg_all},
+                       {"position_max_all_m", r.estimator.position_max_all}};
+  addMachineFigures(json, r);
+  json["stack_cpu_percent"] = r.stack_cpu_percent;
+  addCalibration(json, r);
+  json["nonfinite_messages"] = r.nonfinite;
+  json["max_tilt_deg"] = r.max_tilt_deg;
+  json["touchdown_speed_mps"] = r.touchdown_speed;
+  json["crashed"] = r.crashed;
+  addChecks(json, r);
+  logger::writeJsonDocument(out, json);
   out << "\n";
 }
 

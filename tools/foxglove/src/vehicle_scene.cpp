@@ -12,7 +12,7 @@ namespace {
 constexpr double kGravity = 9.81;  // [m/s^2] thrust arrow: hover thrust draws arm_length long
 
 Json vector3(const Vec3& v) { return {{"x", v.x()}, {"y", v.y()}, {"z", v.z()}}; }
-// Foxglove quaternions are x, y, z, w; ours are stored w, x, y, z (ARCHITECTURE.md §3).
+// Foxglove quaternions are x, y, z, w; ours are stored w, x, y, z (docs/architecture.md §3).
 Json quaternion(const Quat& q) { return {{"x", q[1]}, {"y", q[2]}, {"z", q[3]}, {"w", q[0]}}; }
 Json pose(const Vec3& p, const Quat& q) { return {{"position", vector3(p)}, {"orientation", quaternion(q)}}; }
 Json color(double r, double g, double b, double a) { return {{"r", r}, {"g", g}, {"b", b}, {"a", a}}; }

@@ -1,6 +1,6 @@
 // The 3D view: every vehicle at the simulator's truth and, ghosted, at the estimate, their trails,
 // the reference, the uploaded trajectory, the thrust vector and the disturbance force. World z is
-// up (ARCHITECTURE.md §3); quaternions arrive w, x, y, z and three.js takes x, y, z, w.
+// up (docs/architecture.md §3); quaternions arrive w, x, y, z and three.js takes x, y, z, w.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 

@@ -21,7 +21,7 @@ struct ErrorBounds {
 // x - x_ref with position and velocity errors bounded in norm. q and -q are the same attitude,
 // but K acts on the quaternion linearly and was built at q_lin: K at -q_lin is K at q_lin with its
 // quaternion columns negated. So q is first taken in the hemisphere of q_lin, then q_ref in the
-// hemisphere of that q (ARCHITECTURE.md §3); the command is then the same for every sign choice.
+// hemisphere of that q (docs/architecture.md §3); the command is then the same for every sign choice.
 State stateError(const State& x, const State& x_ref, const Quat& q_lin, const ErrorBounds& bounds);
 
 // u with its body rates scaled to ||omega|| <= omega_max and its thrust clipped to [c_min, c_max]

@@ -17,7 +17,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "sdlqr/logger/json_value.hpp"
+#include "sdlqr/logger/json_document.hpp"
 
 namespace sdlqr::logger {
 
@@ -76,14 +76,21 @@ bool readCell(const std::vector<std::string>& cells, std::size_t column, T& out,
   return false;
 }
 
-bool readJsonCell(const std::vector<std::string>& cells, std::size_t column, JsonValue& out, std::string* error);
-bool checkArray(const JsonValue& value, int expected_size, std::string_view field, std::string* error);
+bool readJsonCell(const std::vector<std::string>& cells, std::size_t column, JsonDocument& out, std::string* error);
+bool checkArray(const JsonDocument& value, int expected_size, std::string_view field, std::string* error);
 
+// An element of a cell's array: a string for a string field; for a number field a number, read as
+// its cell would be (an integer field takes only an integer).
 template <class T>
-bool readJsonElement(const JsonValue& value, T& out, std::string_view field, std::string* error) {
-  const bool kind_ok = std::is_same_v<T, std::string> ? value.isString() : value.isNumber();
-  const bool ok = kind_ok && parseValue(value.text, out);
-  if (!ok) *error = std::string(field) + ": bad array element '" + value.text + "'";
+bool readJsonElement(const JsonDocument& value, T& out, std::string_view field, std::string* error) {
+  bool ok = false;
+  if constexpr (std::is_same_v<T, std::string>) {
+    ok = value.is_string() && parseValue(value.get_ref<const std::string&>(), out);
+  } else {
+    const bool kind_ok = std::is_floating_point_v<T> ? value.is_number() : value.is_number_integer();
+    ok = kind_ok && parseValue(numberText(value), out);
+  }
+  if (!ok) *error = std::string(field) + ": bad array element '" + value.dump() + "'";
   return ok;
 }
 

@@ -80,7 +80,7 @@ class Reader {
   void operator()(const lcmtypes::FieldDescriptor& field, T& member) {
     if (!ok_) return;
     if constexpr (lcmtypes::kIsVector<T>) {
-      JsonValue array;
+      JsonDocument array;
       ok_ = readJsonCell(cells_, column_++, array, error_) && readJson(field, 0, array, member);
     } else {
       ok_ = readCells(member);
@@ -103,14 +103,14 @@ class Reader {
   }
 
   template <class T>
-  bool readJson(const lcmtypes::FieldDescriptor& field, int depth, const JsonValue& array, std::vector<T>& out) {
+  bool readJson(const lcmtypes::FieldDescriptor& field, int depth, const JsonDocument& array, std::vector<T>& out) {
     if (!checkArray(array, static_cast<int>(lengths_.of(field, depth)), field.name, error_)) return false;
-    out.resize(array.items.size());
+    out.resize(array.size());
     for (std::size_t i = 0; i < out.size(); ++i) {
       if constexpr (lcmtypes::kIsVector<T>) {
-        if (!readJson(field, depth + 1, array.items[i], out[i])) return false;
+        if (!readJson(field, depth + 1, array[i], out[i])) return false;
       } else {
-        if (!readJsonElement(array.items[i], out[i], field.name, error_)) return false;
+        if (!readJsonElement(array[i], out[i], field.name, error_)) return false;
       }
     }
     return true;

@@ -6,7 +6,7 @@
 // gives back when it next takes a typical message, in the producer thread that allocated it; so
 // the memory stays what it was at start. Slots that each kept the largest message they had ever
 // held made the recorder's memory creep for half an hour; buffers freed by the writer thread
-// instead still crept (glibc's per-thread caches) (README, Soak).
+// instead still crept (glibc's per-thread caches) (docs/loss-and-starved.md, Soak).
 
 #include <chrono>
 #include <condition_variable>

@@ -65,7 +65,7 @@ struct MetricsInput {
 };
 
 struct MetricsOptions {
-  double rate_command_period_s = 0.01;  // nominal controller period (ARCHITECTURE.md §4: 100 Hz)
+  double rate_command_period_s = 0.01;  // nominal controller period (docs/architecture.md §4: 100 Hz)
 };
 
 struct PacingOrigin {

@@ -1,6 +1,6 @@
 #pragma once
 // sdlqr-px4's core: the stack as a PX4 companion computer, bus-free and clock-free. One method per
-// input, as every process core (ARCHITECTURE.md §5); the main binds the bus and the MAVLink link.
+// input, as every process core (docs/architecture.md §5); the main binds the bus and the MAVLink link.
 //
 //   from PX4 (onBytes)  HEARTBEAT: link, armed, flight mode. ODOMETRY (or LOCAL_POSITION_NED with
 //                       ATTITUDE_QUATERNION where ODOMETRY is not streamed): STATE_EST, and the

@@ -2,7 +2,7 @@
 // The one place where PX4's frames meet sdlqr's (every handler of the bridge and of the emulated
 // PX4 converts through here, as mavros keeps ftf_frame_conversions.cpp):
 //
-//   PX4 (MAVLink)                          sdlqr (ARCHITECTURE.md §3)
+//   PX4 (MAVLink)                          sdlqr (docs/architecture.md §3)
 //   local frame NED: x north, y east, z down   world: x, y horizontal, z up (ENU: x east, y north)
 //   body frame FRD: x front, y right, z down   body: x front, y left, z up (the thrust axis)
 //   q (w, x, y, z) rotates FRD into NED        q (w, x, y, z) rotates body into world

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Four shards of a batch through GNU parallel (as README, Batches, runs them over ssh), merged:
+# Four shards of a batch through GNU parallel (as docs/batches.md, Batches, runs them over ssh), merged:
 # flights.csv, summary.txt and batch.yaml must equal the single run's bit for bit.
 # usage: parallel_shards.sh SDLQR_BATCH SPEC WORK_DIR
 set -euo pipefail

@@ -4,7 +4,7 @@
 // read is refused, as ssh refuses a private key. Its bytes are never printed or logged, and the
 // error texts name the file, never its contents.
 // The file is named by the environment variable SDLQR_BUS_KEY (every process of a stack gets it
-// from the launcher: README, Signed bus); one key per vehicle, so a vehicle's processes cannot
+// from the launcher: docs/hosts-and-signing.md, Signed bus); one key per vehicle, so a vehicle's processes cannot
 // sign for another vehicle on the same bus.
 
 #include <array>

@@ -1,28 +1,38 @@
 #pragma once
-// Command-line parsing shared by every executable: --help on each, one-line errors, exit code 2.
+// Command-line parsing shared by every executable: CLI11 (Debian libcli11-dev) behind one facade,
+// so every --help has the same form (usage line, description, options, epilog), and bad input is
+// one line "<program>: <what>" with exit code 2. Only cli.cpp includes CLI11.
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace sdlqr {
 
 class ArgParser {
  public:
   ArgParser(std::string program, std::string summary);
+  ~ArgParser();
+  ArgParser(const ArgParser&) = delete;
+  ArgParser& operator=(const ArgParser&) = delete;
 
+  // Help texts are wrapped by the caller with '\n'; the indentation of continuation lines is
+  // the formatter's.
   void addFlag(const std::string& name, bool* out, const std::string& help);
   void addOption(const std::string& name, std::string* out, const std::string& metavar, const std::string& help);
+  // Numbers: a finite double, an integer in range; anything else is "<name>: expected ...".
   void addOption(const std::string& name, double* out, const std::string& metavar, const std::string& help);
   void addOption(const std::string& name, int* out, const std::string& metavar, const std::string& help);
   void addOption(const std::string& name, long long* out, const std::string& metavar, const std::string& help);
   // Free-form trailing text for --help (examples, exit codes).
-  void setEpilog(std::string epilog) { epilog_ = std::move(epilog); }
+  void setEpilog(const std::string& epilog);
   // Remaining non-option words are collected here when set; otherwise they are an error.
-  void allowPositional(std::vector<std::string>* out, const std::string& metavar) {
-    positional_ = out;
-    positional_metavar_ = metavar;
-  }
+  void allowPositional(std::vector<std::string>* out, const std::string& metavar);
 
   // Prints usage and exits 0 on --help; prints "<program>: <error>" and exits 2 on bad input.
   void parseOrExit(int argc, const char* const* argv) const;
@@ -32,18 +42,8 @@ class ArgParser {
   const std::string& program() const { return program_; }
 
  private:
-  struct Entry {
-    std::string name;
-    std::string metavar;  // empty for flags
-    std::string help;
-    std::function<std::string(const std::string&)> set;  // returns an error text
-  };
   std::string program_;
-  std::string summary_;
-  std::string epilog_;
-  std::vector<Entry> entries_;
-  std::vector<std::string>* positional_ = nullptr;
-  std::string positional_metavar_;
+  std::unique_ptr<CLI::App> app_;
 };
 
 // Standard options of every flight process.

@@ -22,7 +22,7 @@ struct Deployment {
   std::string lcm_url;     // udpm with ttl >= 1 as soon as there is more than one host
   int prefix_length = 24;  // of the segment the host addresses share
   std::string monitor;     // host of the launcher's own bus tools (calibration, heartbeat wait)
-  // A signed bus (README, Signed bus): key `signing`, by default on across hosts, off on one.
+  // A signed bus (docs/hosts-and-signing.md, Signed bus): key `signing`, by default on across hosts, off on one.
   bool signing = true;
   // The stack table this deployment places (key `procs`, relative to the deployment file); empty:
   // the launcher's, config/stack.procs. Its rows may name a host's address as {address:HOST}.

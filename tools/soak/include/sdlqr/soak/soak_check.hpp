@@ -1,5 +1,5 @@
 #pragma once
-// Judges a long flight for growth (README, Soak): memory, file descriptors, CPU and bus latency
+// Judges a long flight for growth (docs/loss-and-starved.md, Soak): memory, file descriptors, CPU and bus latency
 // in every window of the flight against the first window of the same run, on the same machine,
 // so the verdict never depends on how fast the machine is — only on whether the figures grow.
 // Inputs are plain series: what the soak runner sampled from /proc for each process, and the

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# doc_links.py passes on the repository's README and docs/, and fails, naming the rule, on a page
+# with a broken relative link, a link to a heading that is not there, an ./sdlqr command that does
+# not exist, and a repository file that does not exist.
+#   doc_links_test.sh SOURCE_DIR WORK_DIR
+set -u
+root="$1" work="$2"
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+check="/usr/bin/python3 $here/doc_links.py"
+failed=0
+if out="$($check "$root")"; then
+  echo "ok   the repository: $out"
+else
+  echo "FAIL: the README or docs/ point at what does not exist:"
+  echo "$out"
+  failed=1
+fi
+
+# negative RULE LINE: a copy of ./sdlqr, a docs/ page with a heading, config/ with one file, and a
+# README holding LINE; doc_links.py must exit 1 naming the rule on README.md's line 3.
+negative() {
+  rm -rf "$work" && mkdir -p "$work/docs" "$work/config"
+  cp "$root/sdlqr" "$work/sdlqr"
+  printf '# Page\n\n## A section\n' >"$work/docs/page.md"
+  : >"$work/config/quad.yaml"
+  printf '# sdlqr\n\n%s\n\n[page](docs/page.md#a-section), `config/quad.yaml`, `./sdlqr demo`\n' "$2" >"$work/README.md"
+  local out status
+  out="$($check "$work")"
+  status=$?
+  if [ "$status" -eq 1 ] && grep -q "^README.md:3: $1 " <<<"$out"; then
+    echo "ok   (negative) $1 caught: $(grep "^README.md:3: $1 " <<<"$out")"
+  else
+    echo "FAIL (negative) $1 not caught (exit $status): $2"
+    echo "$out"
+    failed=1
+  fi
+  if [ "$(grep -c '^README.md' <<<"$out")" != 1 ]; then
+    echo "FAIL (negative) $1: the page's valid link, file and command were flagged too:"
+    echo "$out"
+    failed=1
+  fi
+}
+negative broken-link 'See [the design](docs/design.md).'
+negative broken-anchor 'See [a section](docs/page.md#no-such-section).'
+negative unknown-command 'Run `./sdlqr fly hover_jumps`.'
+negative missing-file 'The vehicle file is `config/quad999.yaml`.'
+[ "$failed" -eq 0 ] && echo PASS
+exit "$failed"
