@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "sdlqr/batch/heap.hpp"
 #include "sdlqr/batch/runner.hpp"
 
 namespace sdlqr::batch {
@@ -28,13 +29,16 @@ const BatchContext& context() {
 }
 
 void BM_Flight(benchmark::State& state) {
+  keepFreedHeapMemory();  // as runBatch does
   double simulated = 0.0;
   int flight = 0;
+  logger::FlightLog spare;  // as a batch worker: each flight records into the last one's memory
   for (auto _ : state) {
     const FlightDraw draw = drawFlight(context().spec, context().config, context().scenario.sim, flight++);
-    const FlownFlight flown = fly(context(), worldOf(context(), draw), "sdlqr");
+    FlownFlight flown = fly(context(), worldOf(context(), draw), "sdlqr", false, std::move(spare));
     simulated += flown.world.scenario.duration;
     benchmark::DoNotOptimize(flown.report.checks.size());
+    spare = std::move(flown.log);
   }
   state.counters["sim_s_per_wall_s"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
 }

@@ -30,12 +30,19 @@ int main(int argc, char** argv) {
     const ConfigReader vehicle = loadVehicleConfig(vehicle_path);
     const auto trajectory_params = trajectory::TrajectoryParams::load(vehicle.child("trajectory"));
     const LqrParams lqr = LqrParams::load(vehicle.child("lqr"));
+    // The controller's guard and transitions: what every trajectory is checked against besides lqr.
+    const ConfigReader controller = vehicle.child("controller");
+    const mission::PathLimits limits{
+        lqr, trajectory::TrajectoryGuardParams::declaration().load(controller.child("guard")),
+        trajectory::TransitionParams::declaration().load(controller.child("transition"))};
     if (options.print_config) {
       printProcessConfig(std::cout, "sdlqr-mission", vehicle_path,
-                         {printedSection("lqr", lqr), printedSection("trajectory", trajectory_params)});
+                         {printedSection("lqr", lqr), printedSection("trajectory", trajectory_params),
+                          printedSection("controller.guard", limits.guard),
+                          printedSection("controller.transition", limits.transition)});
       return 0;
     }
-    mission::MissionCore core(scenario, trajectory_params, lqr, mission_options);
+    mission::MissionCore core(scenario, trajectory_params, limits, mission_options);
     if (describe_only) return mission::printDescription(scenario, vehicle_path);
 
     bus::Node node("sdlqr-mission", options, core.health());

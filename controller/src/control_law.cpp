@@ -29,6 +29,21 @@ ControlOutput applyControlLaw(const GainMatrix& K, const Quat& q_lin, const Stat
   return applyInputLimits(u_ref + K * stateError(x, x_ref, q_lin, bounds), limits);
 }
 
+ControlOutput applyControlLawWithinThrust(const GainMatrix& K, const Quat& q_lin, const State& x, const State& x_ref,
+                                          const Input& u_ref, const LqrParams& limits, const ErrorBounds& bounds) {
+  const Input feedback = K * stateError(x, x_ref, q_lin, bounds);
+  const double demand = u_ref[kThrust] + feedback[kThrust];
+  double scale = 1.0;
+  if (demand > limits.c_max && feedback[kThrust] > 0.0) {
+    scale = std::max(0.0, (limits.c_max - u_ref[kThrust]) / feedback[kThrust]);
+  } else if (demand < limits.c_min && feedback[kThrust] < 0.0) {
+    scale = std::max(0.0, (limits.c_min - u_ref[kThrust]) / feedback[kThrust]);
+  }
+  ControlOutput out = applyInputLimits(u_ref + scale * feedback, limits);
+  out.headroom_scaled = scale < 1.0;
+  return out;
+}
+
 ControlOutput applyInputLimits(const Input& u, const LqrParams& limits) {
   ControlOutput out;
   out.u = u;

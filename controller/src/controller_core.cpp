@@ -19,7 +19,9 @@ ControllerCore::ControllerCore(const LqrParams& lqr, const ControllerParams& par
       stale_ticks_(health_.counters().add("controller.stale_ticks")),
       saturated_ticks_(health_.counters().add("controller.saturated_ticks")),
       gains_freshness_(health_.counters().add("watchdog.gains.freshness")),  // 0 fresh, 1 stale, 2 fallback
-      guard_aborts_(health_.counters().add("trajectory.guard_abort")) {}
+      guard_aborts_(health_.counters().add("trajectory.guard_abort")),
+      transitions_(health_.counters().add("trajectory.transitions")),
+      entries_refused_(health_.counters().add("trajectory.entry_refused")) {}
 
 RejectReason ControllerCore::onStateEstimate(const StateEstimate& estimate, Outbox& out) {
   const RejectReason reason = admitClock(estimate, limits_, state_clock_);
@@ -42,6 +44,8 @@ void ControllerCore::countTick(const RateCommand& command) {
   if (status.gains == GainsFreshness::kStale) c.increment(stale_ticks_);
   if (command.saturated) c.increment(saturated_ticks_);
   c.set(guard_aborts_, lqr_.references().guardAborts());
+  c.set(transitions_, lqr_.references().transitions());
+  c.set(entries_refused_, lqr_.references().entriesRefused());
   health_.setState(status.gains == GainsFreshness::kFresh ? ProcessState::kRunning : ProcessState::kDegraded);
 }
 

@@ -49,12 +49,21 @@ const ParamTable<ControllerParams>& ControllerParams::declaration() {
              "... and moving at most this, the hold is set where the vehicle is");
     declareTracking(t, &P::tracking);  // in flight: every process that checks PARAMS knows it
     t.section("guard", &P::guard);
+    t.section("transition", &P::transition);
     t.number("switch_time_s", &P::switch_time_s, 0.5, "s", Range::closed(0.0, 5.0),
              "a law switch's command offset decays to zero over this time (0: the command jumps)");
     t.number("integral_limit", &P::integral_limit, 0.5, "m s", Range::above(0.0),
              "sdlqr_integral anti-windup: bound on the norm of the position-error integral");
     t.number("integral_zone", &P::integral_zone, 0.2, "m", Range::above(0.0),
              "sdlqr_integral anti-windup: integrates only within this distance of the reference (not during a jump)");
+    t.number("thrust_gain_time_constant", &P::thrust_gain_time_constant, 1.0, "s", Range::closed(0.05, 100.0),
+             "sdlqr_adaptive: time constant of the thrust gain estimate (produced over commanded thrust)");
+    t.number("thrust_gain_min", &P::thrust_gain_min, 0.5, "-", Range::closed(0.1, 1.0),
+             "sdlqr_adaptive: lower bound of the thrust gain estimate");
+    t.number("thrust_gain_max", &P::thrust_gain_max, 1.5, "-", Range::closed(1.0, 10.0),
+             "sdlqr_adaptive: upper bound of the thrust gain estimate");
+    t.number("thrust_gain_zone", &P::thrust_gain_zone, 0.15, "m", Range::above(0.0),
+             "sdlqr_adaptive: the thrust gain adapts only this close to the reference (not held or pushed away)");
     t.list<3>("geometric_position_gain", &P::geometric_position_gain, kGeometricPositionGain, "1/s^2", Range::above(0.0),
            "geometric kp x, y, z: the default hover LQR as a cascade");
     t.list<3>("geometric_velocity_gain", &P::geometric_velocity_gain, kGeometricVelocityGain, "1/s", Range::above(0.0),

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "sdlqr/math/quaternion.hpp"
 
@@ -13,21 +14,49 @@ const char* toString(FlightPhase phase) {
     case FlightPhase::kTakeoff: return "takeoff";
     case FlightPhase::kHold: return "hold";
     case FlightPhase::kTrajectory: return "trajectory";
+    case FlightPhase::kExit: return "exit";
     case FlightPhase::kLanding: return "landing";
   }
   return "unknown";
 }
 
+namespace {
+
+LqrParams withGravity(double gravity) {
+  LqrParams lqr;
+  lqr.gravity = gravity;
+  return lqr;
+}
+
+}  // namespace
+
 ReferenceGenerator::ReferenceGenerator(const ControllerParams& params, double gravity)
-    : params_(params), gravity_(gravity) {}
+    : params_(params),
+      gravity_(gravity),
+      lqr_(withGravity(gravity)),
+      transition_(params.transition, lqr_),
+      last_u_(makeInput(Vec3::Zero(), gravity)) {}
+
+void ReferenceGenerator::setLimits(const LqrParams& lqr) {
+  lqr_ = lqr;
+  transition_.setLimits(lqr);
+}
 
 std::string ReferenceGenerator::setTrajectory(const Trajectory& trajectory, int64_t now_utime) {
   if (phase_ == FlightPhase::kIdle || phase_ == FlightPhase::kLanding) return "not flying";
+  // The inputs of its samples within the limits; their consistency (the paper's ellipse has none) is
+  // the sender's affair: the guard watches the flight.
+  const trajectory::FeasibilityLimits limits = trajectory::FeasibilityLimits::from(
+      lqr_, params_.guard.max_speed, std::numeric_limits<double>::infinity());
+  const trajectory::FeasibilityReport report = trajectory::checkFeasibility(trajectory, limits, gravity_);
+  if (!report.feasible()) return "beyond the vehicle:" + trajectory::describeViolations(report, limits);
   const int64_t start_utime = trajectory.start_utime > 0 ? trajectory.start_utime : now_utime;
   const std::string error = tracker_.load(trajectory, static_cast<double>(start_utime) * 1e-6);
   if (!error.empty()) return error;
   trajectory_seq_ = trajectory.seq;
   phase_ = FlightPhase::kTrajectory;
+  entry_pending_ = params_.transition.enabled;
+  entering_ = false;
   return {};
 }
 
@@ -55,15 +84,17 @@ void ReferenceGenerator::handleCommand(const Command& command) {
       break;
     case CommandType::kGoto:
       if (flying) {
+        recovering_ = false;
+        if (beginExit(&command.position, command.yaw, FlightPhase::kHold)) break;
         tracker_.clear();
         hold(command.position, command.yaw);
-        recovering_ = false;
       }
       break;
     case CommandType::kLand:
       takeoff_pending_ = false;
       recovering_ = false;
       if (flying) {
+        if (beginExit(nullptr, yaw_, FlightPhase::kLanding)) break;
         tracker_.clear();
         phase_ = FlightPhase::kLanding;
         // The descent starts from the estimate of the next tick, not from whichever estimate
@@ -131,36 +162,11 @@ bool ReferenceGenerator::landedAt(const StateEstimate& estimate) {
   return static_cast<double>(estimate.utime - landed_since_utime_) * 1e-6 >= params_.landed_time;
 }
 
-// The trajectory's reference at this estimate into out; false when the guard tripped (the
-// trajectory is dropped and the generator holds where the vehicle is).
-bool ReferenceGenerator::followTrajectory(const StateEstimate& estimate, Reference& out) {
-  const trajectory::TrackingOutput& tracked =
-      tracker_.update(static_cast<double>(estimate.utime) * 1e-6, estimate.position);
-  const trajectory::GuardTrip trip =
-      trajectory::checkGuard(params_.guard, estimate.position, estimate.velocity, position(tracked.x));
-  if (trip != trajectory::GuardTrip::kNone) {
-    // Beyond the guard's bounds: stop following the reference and hold where the vehicle is.
-    ++guard_aborts_;
-    last_guard_trip_ = trip;
-    tracker_.clear();
-    hold(estimate.position, quat::yaw(orientation(tracked.x)));
-    return false;
-  }
-  out.x = tracked.x;
-  out.u = tracked.u;
-  out.mode = tracker_.mode();
-  out.index = tracked.index;
-  out.gamma = tracked.gamma;
-  out.trajectory_seq = trajectory_seq_;
-  // A GOTO or LAND after the trajectory starts from where the reference was.
-  setpoint_ = position(tracked.x);
-  yaw_ = quat::yaw(orientation(tracked.x));
-  return true;
-}
-
 bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
   const double dt = last_utime_ < 0 ? 0.0 : std::max(0.0, static_cast<double>(estimate.utime - last_utime_) * 1e-6);
   last_utime_ = estimate.utime;
+  last_estimate_position_ = estimate.position;
+  last_estimate_velocity_ = estimate.velocity;
 
   Vec3 position_ref = setpoint_;
   Vec3 velocity_ref = Vec3::Zero();
@@ -192,9 +198,9 @@ bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
       if (recovering_) position_ref = recoveryReference(estimate);
       break;
     case FlightPhase::kTrajectory:
-      if (followTrajectory(estimate, out)) return true;
-      position_ref = setpoint_;  // the guard tripped: hold where the vehicle is
-      break;
+      return trackTrajectory(estimate, out);
+    case FlightPhase::kExit:
+      return flyExit(estimate, out);
     case FlightPhase::kLanding: {
       if (landing_pending_) {
         ramp_position_ = Vec3(estimate.position[0], estimate.position[1], std::max(estimate.position[2], ground_z_));
@@ -215,13 +221,21 @@ bool ReferenceGenerator::update(const StateEstimate& estimate, Reference& out) {
     }
   }
 
-  out.x = makeState(position_ref, quat::fromYaw(yaw_), velocity_ref);
-  out.u = makeInput(Vec3::Zero(), gravity_);
-  out.mode = ReferenceMode::kSetpoint;
-  out.index = 0;
-  out.gamma = 0.0;
-  out.trajectory_seq = -1;
+  emit(out, makeState(position_ref, quat::fromYaw(yaw_), velocity_ref), makeInput(Vec3::Zero(), gravity_),
+       ReferenceMode::kSetpoint, 0, 0.0, -1);
   return true;
+}
+
+void ReferenceGenerator::emit(Reference& out, const State& x, const Input& u, ReferenceMode mode, int index,
+                              double gamma, int64_t trajectory_seq) {
+  out.x = x;
+  out.u = u;
+  out.mode = mode;
+  out.index = index;
+  out.gamma = gamma;
+  out.trajectory_seq = trajectory_seq;
+  last_x_ = x;
+  last_u_ = u;
 }
 
 }  // namespace sdlqr::controller

@@ -36,6 +36,20 @@ GainMatrix yawedHoverGain(const GainMatrix& K0, double yaw) {
   return K;
 }
 
+// The error the integral integrates. A spatially tracked path's reference is the point of the path
+// nearest the vehicle, so the error along the path is the reference's choice, not the vehicle's
+// fault: integrated, it holds the vehicle back (a rest-to-rest path creeps off its start only as the
+// vehicle moves). Along the path it is left out; at a reference at rest on such a path (its start)
+// nothing is integrated.
+bool integrableError(const Reference& reference, Vec3& error) {
+  if (reference.mode != ReferenceMode::kSpatial) return true;
+  const Vec3 along = velocity(reference.x);
+  const double speed = along.norm();
+  if (speed < 0.1) return false;
+  error -= error.dot(along / speed) * (along / speed);
+  return true;
+}
+
 int64_t periodUtime(const ControllerParams& params) { return static_cast<int64_t>(1e6 / params.rate_hz + 0.5); }
 int64_t maxPredictionUtime(const ControllerParams& params) {
   return static_cast<int64_t>(1e6 * params.max_prediction_s + 0.5);
@@ -50,7 +64,9 @@ StateDependentLqr::StateDependentLqr(const LqrParams& lqr, const ControllerParam
       fallback_K_(solveHoverGain(lqr)),
       thrust_model_(lqr.gravity),
       tick_law_(lqr.law),
-      last_thrust_(lqr.gravity) {}
+      last_thrust_(lqr.gravity) {
+  references_.setLimits(lqr);
+}
 
 StateDependentLqr::GainSlot& StateDependentLqr::slotFor(ControlLaw law) {
   return law == ControlLaw::kSdlqrIntegral ? integral_gains_ : actuator_gains_;
@@ -94,6 +110,7 @@ ParamsOutcome StateDependentLqr::applyParams(const ParamsUpdate& update) {
   // A law switched to the integral starts it from zero (the transfer takes the command over).
   if (next.params().law != lqr_.params().law) integral_.reset();
   lqr_ = next;
+  references_.setLimits(lqr_.params());
   return outcome;
 }
 
@@ -115,8 +132,10 @@ void StateDependentLqr::hoverGain(const Reference& reference, GainMatrix& K, Qua
   q_lin = quat::fromYaw(yaw);
 }
 
-// The paper's law: the newest K, stale, or the hover K after the fallback age.
-StateDependentLqr::LawTick StateDependentLqr::lqrTick(const StateEstimate& estimate, const Reference& reference) {
+// The paper's law: the newest K, stale, or the hover K after the fallback age; `u_ref` the
+// feed-forward (the reference's, or sdlqr_adaptive's thrust over the estimated gain).
+StateDependentLqr::LawTick StateDependentLqr::lqrTick(const StateEstimate& estimate, const Reference& reference,
+                                                      const Input& u_ref) {
   LawTick tick;
   const GainMatrix& chosen = chooseGain(estimate.utime, tick.freshness, tick.gains_seq);
   GainMatrix yawed;
@@ -127,7 +146,7 @@ StateDependentLqr::LawTick StateDependentLqr::lqrTick(const StateEstimate& estim
     K = &yawed;
   }
   const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
-  tick.control = applyControlLaw(*K, q_lin, estimate.state(), reference.x, reference.u, lqr_.params(), bounds);
+  tick.control = applyControlLaw(*K, q_lin, estimate.state(), reference.x, u_ref, lqr_.params(), bounds);
   return tick;
 }
 
@@ -138,7 +157,12 @@ bool StateDependentLqr::extensionFresh(const GainSlot& slot, int64_t now_utime) 
 StateDependentLqr::LawTick StateDependentLqr::computeLaw(const StateEstimate& estimate, const Reference& reference) {
   const ControlLaw law = lqr_.params().law;
   const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
-  if (law == ControlLaw::kSdlqr) return lqrTick(estimate, reference);
+  if (law == ControlLaw::kSdlqr) return lqrTick(estimate, reference, reference.u);
+  if (law == ControlLaw::kSdlqrAdaptive) {
+    Input u_ref = reference.u;
+    u_ref[kThrust] /= thrust_gain_.value();
+    return lqrTick(estimate, reference, u_ref);
+  }
   // The laws that use no GAINS report the solver's freshness all the same (a switch back needs it).
   LawTick tick;
   int64_t solver_seq = -1;
@@ -157,32 +181,36 @@ StateDependentLqr::LawTick StateDependentLqr::computeLaw(const StateEstimate& es
     return tick;
   }
   const GainSlot& slot = law == ControlLaw::kSdlqrIntegral ? integral_gains_ : actuator_gains_;
-  if (!extensionFresh(slot, estimate.utime)) return lqrTick(estimate, reference);
+  if (!extensionFresh(slot, estimate.utime)) return lqrTick(estimate, reference, reference.u);
   const double age = static_cast<double>(estimate.utime - slot.gains.utime) * 1e-6;
   tick.freshness = age <= params_.gains_stale_s ? GainsFreshness::kFresh : GainsFreshness::kStale;
   tick.gains_seq = slot.gains.seq;
   tick.extension = true;
   Input u_ref = reference.u;
+  const Quat q_lin = orientation(slot.gains.x_lin);
   if (law == ControlLaw::kSdlqrIntegral) {
     u_ref += slot.gains.K_aug.middleCols<3>(kAugIntegral) * integral_.value();
-  } else {
-    u_ref += slot.gains.K_aug.col(kAugThrust) * (thrust_model_.value() - reference.u[kThrust]);
+    tick.control = applyControlLawWithinThrust(slot.gains.K, q_lin, estimate.state(), reference.x, u_ref,
+                                               lqr_.params(), bounds);
+    return tick;
   }
-  tick.control = applyControlLaw(slot.gains.K, orientation(slot.gains.x_lin), estimate.state(), reference.x, u_ref,
-                                 lqr_.params(), bounds);
+  u_ref += slot.gains.K_aug.col(kAugThrust) * (thrust_model_.value() - reference.u[kThrust]);
+  tick.control = applyControlLaw(slot.gains.K, q_lin, estimate.state(), reference.x, u_ref, lqr_.params(), bounds);
   return tick;
 }
 
 void StateDependentLqr::updateExtensionStates(const StateEstimate& estimate, const Reference& reference,
-                                              const RateCommand& command) {
+                                              const RateCommand& command, bool headroom_scaled) {
   const double period = 1.0 / params_.rate_hz;
   thrust_model_.update(command.thrust, period, lqr_.params().thrust_time_constant);
+  last_reference_position_ = position(reference.x);
   const FlightPhase phase = references_.phase();
   if (phase == FlightPhase::kHold || phase == FlightPhase::kTrajectory) {
     const ErrorBounds bounds{params_.max_position_error, params_.max_velocity_error};
     const State error = stateError(estimate.state(), reference.x, orientation(reference.x), bounds);
-    if (position(error).norm() < params_.integral_zone) {
-      integral_.update(position(error), period, command.saturated != 0, params_.integral_limit);
+    Vec3 integrated = position(error);
+    if (position(error).norm() < params_.integral_zone && integrableError(reference, integrated)) {
+      integral_.update(integrated, period, command.saturated != 0 || headroom_scaled, params_.integral_limit);
     }
   }
 }
@@ -199,8 +227,23 @@ int64_t StateDependentLqr::tickUtimeFor(const StateEstimate& received) const {
   return next_tick_utime_;
 }
 
+void StateDependentLqr::updateThrustGain(const StateEstimate& received) {
+  const FlightPhase phase = status_.phase;
+  const bool airborne = phase == FlightPhase::kHold || phase == FlightPhase::kTrajectory || phase == FlightPhase::kExit;
+  if (!has_estimate_ || !airborne || received.status != EstimatorStatus::kOk || latest_.status != EstimatorStatus::kOk) {
+    return;
+  }
+  // Near the reference only: a vehicle held or pushed away feels forces no thrust gain explains.
+  if ((received.position - last_reference_position_).norm() > params_.thrust_gain_zone) return;
+  const double dt = static_cast<double>(received.utime - latest_.utime) * 1e-6;
+  thrust_gain_.update(received.velocity - latest_.velocity, dt, quat::bodyZ(received.orientation.normalized()),
+                      thrust_model_.value(), lqr_.params().gravity, params_.thrust_gain_time_constant,
+                      params_.thrust_gain_min, params_.thrust_gain_max);
+}
+
 bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out) {
   const int64_t tick_utime = tickUtimeFor(received);
+  updateThrustGain(received);
   latest_ = received;
   has_estimate_ = true;
   if (tick_utime < 0) return false;
@@ -217,6 +260,7 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
     // On the ground: the extensions' states start afresh at the next take-off.
     integral_.reset();
     thrust_model_.reset(lqr_.params().gravity);
+    thrust_gain_.reset();
     return false;
   }
   status_.phase = references_.phase();
@@ -246,6 +290,7 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
   reference.state_seq = estimate.seq;
   reference.command_seq = command_seq_handled_;
   reference.params_seq = lqr_.seq();
+  reference.thrust_gain = law == ControlLaw::kSdlqrAdaptive ? thrust_gain_.value() : 1.0;
 
   RateCommand& command = out.command;
   command.utime = estimate.utime;
@@ -264,7 +309,7 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
   last_thrust_ = command.thrust;
   last_command_ = control.u;
   has_commanded_ = true;
-  updateExtensionStates(estimate, reference, command);
+  updateExtensionStates(estimate, reference, command, control.headroom_scaled);
   status_.law = law;
   status_.extension_active = law_tick.extension;
   ++status_.ticks;

@@ -29,6 +29,9 @@ Estimator::Estimator(const EstimatorParams& params)
     : params_(params),
       noise_(ProcessNoise::from(params)),
       period_us_(params.outputPeriodUs()),
+      imu_max_gap_us_(secondsToUs(params.imu_max_gap)),
+      reinit_after_us_(secondsToUs(params.reinit_after)),
+      vio_timeout_us_(secondsToUs(params.vio_timeout)),
       downsampler_(params.outputPeriodUs(), params.accel_clip_level),
       history_(params.valid() ? params.historyCapacity() : 2),
       gated_run_(params.gate_chi2, secondsToUs(params.vio_reset_after)) {
@@ -79,7 +82,7 @@ bool Estimator::imuTimingAcceptable(const ImuSample& sample) {
   RejectReason reason;
   if (step <= 0) {
     reason = RejectReason::kTimeBackwards;
-  } else if (step > secondsToUs(params_.imu_max_gap)) {
+  } else if (step > imu_max_gap_us_) {
     reason = RejectReason::kTimeGap;
   } else {
     timing_rejects_in_a_row_ = 0;
@@ -133,17 +136,16 @@ std::optional<StateEstimate> Estimator::onImu(const ImuSample& sample) {
 }
 
 void Estimator::onWindow(const ImuWindow& window) {
-  NavState state;
-  ErrorCovariance covariance = ErrorCovariance::Zero();
-  if (initialized_ && !history_.empty()) {
-    state = history_.newest().state;
-    covariance = history_.newest().covariance;
-    propagate(state, covariance, window.delta, noise_);
-  }
+  // The newest entry keeps its slot when a new one is pushed (the capacity is at least 2).
+  const HistoryEntry* previous = initialized_ && !history_.empty() ? &history_.newest() : nullptr;
   HistoryEntry& entry = history_.pushNewest();
+  if (previous != nullptr) {
+    propagate(previous->state, previous->covariance, window.delta, noise_, entry.state, entry.covariance);
+  } else {
+    entry.state = NavState();
+    entry.covariance.setZero();
+  }
   entry.utime = window.end_utime;
-  entry.state = state;
-  entry.covariance = covariance;
   entry.input = window.delta;
   entry.imu_seq = window.last_imu_seq;
   ++counters_.imu_windows;
@@ -153,7 +155,7 @@ void Estimator::onWindow(const ImuWindow& window) {
 // ---- VIO ----------------------------------------------------------------------------------------
 
 bool Estimator::needsInitialization(int64_t capture_utime) const {
-  return !initialized_ || capture_utime - last_fused_capture_ > secondsToUs(params_.reinit_after);
+  return !initialized_ || capture_utime - last_fused_capture_ > reinit_after_us_;
 }
 
 VioOutcome Estimator::onVio(const VioPose& pose) {
@@ -274,9 +276,7 @@ VioOutcome Estimator::fuseAtCaptureTime(const VioPose& pose, bool initialize) {
   for (first_to_recompute = updated + 1; first_to_recompute < history_.size(); ++first_to_recompute) {
     HistoryEntry& entry = history_.at(first_to_recompute);
     const HistoryEntry& previous = history_.at(first_to_recompute - 1);
-    entry.state = previous.state;
-    entry.covariance = previous.covariance;
-    propagate(entry.state, entry.covariance, entry.input, noise_);
+    propagate(previous.state, previous.covariance, entry.input, noise_, entry.state, entry.covariance);
   }
 
   initialized_ = true;
@@ -297,7 +297,7 @@ VioOutcome Estimator::fuseAtCaptureTime(const VioPose& pose, bool initialize) {
 void Estimator::updateStatus() {
   if (!initialized_) {
     status_ = EstimatorStatus::kInitializing;
-  } else if (stateUtime() - last_fused_capture_ > secondsToUs(params_.vio_timeout)) {
+  } else if (stateUtime() - last_fused_capture_ > vio_timeout_us_) {
     status_ = EstimatorStatus::kVioTimeout;
   } else {
     status_ = EstimatorStatus::kOk;

@@ -26,7 +26,9 @@ EstimatorCore::EstimatorCore(const EstimatorParams& params)
 
 void EstimatorCore::sync() {
   const EstimatorCounters& now = estimator_.counters();
-  for (int r = 1; r < kRejectReasonCount; ++r) {
+  // Called at every IMU sample: the reasons are walked only when a rejection was counted.
+  const bool rejected = now.imu_rejected != seen_.imu_rejected || now.vio_rejected != seen_.vio_rejected;
+  for (int r = 1; rejected && r < kRejectReasonCount; ++r) {
     const auto reason = static_cast<RejectReason>(r);
     for (int64_t n = seen_.imuRejected(reason); n < now.imuRejected(reason); ++n) health_.reject(Stream::kImu, reason);
     for (int64_t n = seen_.vioRejected(reason); n < now.vioRejected(reason); ++n) {

@@ -5,9 +5,12 @@ namespace sdlqr::gains {
 namespace {
 
 // hover_lqr and geometric use no GAINS; the paper's K is solved for them all the same, so that a
-// switch back to sdlqr finds a fresh K at once.
+// switch back to sdlqr finds a fresh K at once. sdlqr_adaptive's is the paper's model with the
+// REFERENCE's thrust gain.
 ControlLaw solvedLaw(ControlLaw law) {
-  return law == ControlLaw::kSdlqrIntegral || law == ControlLaw::kSdlqrActuator ? law : ControlLaw::kSdlqr;
+  const bool own = law == ControlLaw::kSdlqrIntegral || law == ControlLaw::kSdlqrActuator ||
+                   law == ControlLaw::kSdlqrAdaptive;
+  return own ? law : ControlLaw::kSdlqr;
 }
 
 }  // namespace
@@ -26,7 +29,7 @@ bool GainScheduler::due(const StateEstimate& estimate) {
 SolveStatus GainScheduler::solve(const StateEstimate& estimate, GainSet& out) {
   const State x = estimate.state();
   const LqrParams& params = lqr_.params();
-  const ExtendedLqrResult extended = solveLqrForLaw(x, reference_input_, params);
+  const ExtendedLqrResult extended = solveLqrForLaw(x, reference_input_, params, reference_thrust_gain_);
   const LqrResult& result = extended.lqr;
   ++solves_;
   out.utime = estimate.utime;
@@ -45,6 +48,7 @@ SolveStatus GainScheduler::solve(const StateEstimate& estimate, GainSet& out) {
   out.status = result.status;
   out.law = solvedLaw(params.law);
   out.thrust_time_constant = out.law == ControlLaw::kSdlqrActuator ? params.thrust_time_constant : 0.0;
+  out.thrust_gain = reference_thrust_gain_;
   if (result.status != SolveStatus::kOk) {
     ++failures_;
     out.K.setZero();

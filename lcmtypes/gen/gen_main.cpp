@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -13,32 +12,10 @@
 #include <CLI/CLI.hpp>
 
 #include "sdlqr/lcmgen/emit.hpp"
+#include "sdlqr/lcmgen/generated_file.hpp"
 
-namespace {
-
-using sdlqr::lcmgen::LcmSchemaError;
-
-std::string readFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw LcmSchemaError("cannot read " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void writeIfChanged(const std::filesystem::path& path, const std::string& content) {
-  std::ifstream existing(path, std::ios::binary);
-  if (existing) {
-    std::ostringstream old;
-    old << existing.rdbuf();
-    if (old.str() == content) return;
-  }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << content;
-  if (!out) throw LcmSchemaError("cannot write " + path.string());
-}
-
-}  // namespace
+using sdlqr::lcmgen::readFile;
+using sdlqr::lcmgen::writeIfChanged;
 
 int main(int argc, char** argv) {
   // CLI11 directly (Debian libcli11-dev): the generator is built before the libraries whose

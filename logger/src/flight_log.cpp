@@ -1,5 +1,6 @@
 #include "sdlqr/logger/flight_log.hpp"
 
+#include <tuple>
 #include <unordered_map>
 
 #include "lcm_decode.hpp"
@@ -44,6 +45,13 @@ void decode(Stream stream, const LogEvent& e, FlightLog& log, ChannelTimeline& t
 }
 
 }  // namespace
+
+void FlightLog::clear() {
+  vehicle.clear();
+  file = LogFileStatus();
+  std::apply([](auto&... series) { (series.clear(), ...); }, allSeries());
+  channels.clear();
+}
 
 template <class Plain>
 bool decodeMessage(const LogEvent& event, Plain* out) {

@@ -44,6 +44,7 @@ Mixer::Mixer(const Mat44& effectiveness, double min_thrust, double max_thrust, c
   if (!(collective_column_.minCoeff() > 1e-6)) {
     throw std::invalid_argument("mixer: a rotor does not contribute to the collective thrust");
   }
+  for (int rotor = 0; rotor < 4; ++rotor) inverse_collective_column_[rotor] = 1.0 / collective_column_[rotor];
   setThrustLimits(min_thrust, max_thrust);
 }
 
@@ -70,7 +71,7 @@ double Mixer::largestFeasibleScale(const Vec4& base, const Vec4& direction, doub
   // stays below each upper bound; each pair limits k from above when their gap closes with k.
   double lower_offset[5], lower_slope[5], upper_offset[5], upper_slope[5];
   for (int rotor = 0; rotor < 4; ++rotor) {
-    const double inverse_share = 1.0 / collective_column_[rotor];
+    const double inverse_share = inverse_collective_column_[rotor];
     lower_offset[rotor] = (min_thrust_ - base[rotor]) * inverse_share;
     upper_offset[rotor] = (max_thrust_ - base[rotor]) * inverse_share;
     lower_slope[rotor] = upper_slope[rotor] = -direction[rotor] * inverse_share;
@@ -86,8 +87,13 @@ double Mixer::largestFeasibleScale(const Vec4& base, const Vec4& direction, doub
       if (!std::isfinite(upper_offset[u])) continue;
       const double gap = upper_offset[u] - lower_offset[l];  // must stay >= 0
       const double closing = lower_slope[l] - upper_slope[u];
-      if (closing > 0.0) scale = std::min(scale, gap / closing);
-      else if (gap < 0.0) scale = 0.0;  // infeasible whatever k: give the axis up entirely
+      // scale <= 1: a gap of at least `closing` (gap / closing >= 1) cannot lower it, and the
+      // division it spares is most of a mix (the test is exact: the quotient rounds monotonically).
+      if (closing > 0.0) {
+        if (gap < closing) scale = std::min(scale, gap / closing);
+      } else if (gap < 0.0) {
+        scale = 0.0;  // infeasible whatever k: give the axis up entirely
+      }
     }
   }
   return std::clamp(scale, 0.0, 1.0);

@@ -10,30 +10,51 @@ namespace sdlqr::mission {
 
 namespace {
 
+// Each trajectory event's path, checked from the hover the scenario leaves the vehicle in before it:
+// the last take-off height or GOTO (the take-off from the origin of the world), else the end of the
+// path flown before, else the path's own start.
 std::vector<Trajectory> buildTrajectories(const Scenario& scenario, const trajectory::TrajectoryParams& params,
-                                          const LqrParams& lqr) {
+                                          const PathLimits& limits) {
   std::vector<Trajectory> trajectories(scenario.events.size());
+  bool known = false;
+  Vec3 hover = Vec3::Zero();
+  double yaw = 0.0;
   for (size_t i = 0; i < scenario.events.size(); ++i) {
-    if (scenario.events[i].kind == ScenarioEvent::Kind::kTrajectory) {
-      trajectories[i] =
-          buildTrajectory(scenario.events[i].trajectory, params, lqr, "events[" + std::to_string(i) + "].trajectory");
+    const ScenarioEvent& event = scenario.events[i];
+    if (event.kind == ScenarioEvent::Kind::kCommand && event.command.command == CommandType::kTakeoff) {
+      hover = Vec3(0.0, 0.0, event.command.position[2]);
+      known = true;
+    } else if (event.kind == ScenarioEvent::Kind::kCommand && event.command.command == CommandType::kGoto) {
+      hover = event.command.position;
+      yaw = event.command.yaw;
+      known = true;
     }
+    if (event.kind != ScenarioEvent::Kind::kTrajectory) continue;
+    const std::string key = "events[" + std::to_string(i) + "].trajectory";
+    if (!known) {
+      // Expected at the path's start: built once to learn where that is.
+      const Trajectory probe = buildTrajectory(event.trajectory, params, limits, Vec3::Zero(), yaw, key + "(probe)");
+      hover = position(probe.samples.front().x);
+    }
+    trajectories[i] = buildTrajectory(event.trajectory, params, limits, hover, yaw, key);
+    hover = position(trajectories[i].samples.back().x);
+    known = true;
   }
   return trajectories;
 }
 
 }  // namespace
 
-MissionCore::MissionCore(const Scenario& scenario, const trajectory::TrajectoryParams& trajectory, const LqrParams& lqr,
-                         const MissionOptions& options)
+MissionCore::MissionCore(const Scenario& scenario, const trajectory::TrajectoryParams& trajectory,
+                         const PathLimits& limits, const MissionOptions& options)
     : scenario_(scenario),
       options_(options),
-      trajectories_(buildTrajectories(scenario, trajectory, lqr)),
+      trajectories_(buildTrajectories(scenario, trajectory, limits)),
       player_(scenario),
       resender_(static_cast<int64_t>(options.resend_interval_s * 1e6)),
       throws_detected_(health_.counters().add("throw.detected")) {
   if (scenario.throw_mode.enabled()) {
-    throw_detector_.emplace(scenario.throw_mode, lqr.gravity);
+    throw_detector_.emplace(scenario.throw_mode, limits.lqr.gravity);
     throw_armed_utime_ = static_cast<int64_t>(scenario.throw_mode.at * 1e6);
   }
 }

@@ -135,12 +135,6 @@ void parseSpeedPath(const ConfigReader& t, const std::string& base_dir, Trajecto
     t.read("v_max", out.v_max);
     if (!(out.v_max > 0.0 && out.v_max <= 30.0)) throw ConfigError(t.keyPath("v_max"), "must be in (0, 30] m/s");
   }
-  std::string on_infeasible = "refuse";
-  t.read("on_infeasible", on_infeasible);
-  if (on_infeasible != "refuse" && on_infeasible != "scale") {
-    throw ConfigError(t.keyPath("on_infeasible"), "expected refuse or scale");
-  }
-  out.scale_if_infeasible = on_infeasible == "scale";
 }
 
 TrajectoryRequest parseTrajectory(const ConfigReader& t, const std::string& base_dir) {
@@ -162,9 +156,18 @@ TrajectoryRequest parseTrajectory(const ConfigReader& t, const std::string& base
   if (isSpeedPath(out.generator)) {
     parseSpeedPath(t, base_dir, out);
   } else {
-    for (const char* key : {"waypoints", "speed", "size", "center", "v_max", "on_infeasible"}) {
+    for (const char* key : {"waypoints", "speed", "size", "center", "v_max"}) {
       if (t.has(key)) throw ConfigError(t.keyPath(key), "only for circle, lemniscate and waypoints");
     }
+  }
+  std::string on_infeasible = "refuse";
+  t.read("on_infeasible", on_infeasible);
+  if (on_infeasible == "scale") {
+    out.on_infeasible = OnInfeasible::kScale;
+  } else if (on_infeasible == "fly") {
+    out.on_infeasible = OnInfeasible::kFly;
+  } else if (on_infeasible != "refuse") {
+    throw ConfigError(t.keyPath("on_infeasible"), "expected refuse, scale or fly");
   }
   if (t.has("laps")) {
     t.read("laps", out.laps);

@@ -5,16 +5,21 @@
 
 #include "sdlqr/trajectory/closed_paths.hpp"
 #include "sdlqr/trajectory/paper_cases.hpp"
-#include "sdlqr/trajectory/speed_fit.hpp"
-#include "sdlqr/trajectory/waypoint_file.hpp"
+#include "sdlqr/trajectory/path_check.hpp"
 #include "sdlqr/trajectory/sampling.hpp"
+#include "sdlqr/trajectory/speed_fit.hpp"
 #include "sdlqr/trajectory/trajectory_csv.hpp"
+#include "sdlqr/trajectory/waypoint_file.hpp"
 
 namespace sdlqr::mission {
 
 namespace {
 
 using trajectory::WaypointSpec;
+
+bool isSpeedPath(const TrajectoryRequest& request) {
+  return request.generator == "circle" || request.generator == "lemniscate" || request.generator == "waypoints";
+}
 
 WaypointSpec waypointsOf(const TrajectoryRequest& request) {
   const std::string& path = request.waypoints_path;
@@ -59,47 +64,74 @@ std::function<Trajectory(double)> speedPathGenerator(const TrajectoryRequest& re
   };
 }
 
-// Refused with the feasibility verdict, or flown at the highest feasible speed when asked.
-Trajectory buildSpeedPath(const TrajectoryRequest& request, const trajectory::TrajectoryParams& params,
-                          const LqrParams& lqr, const std::string& key) {
-  double speed = 0.0;
-  const auto generate = speedPathGenerator(request, params, lqr.gravity, speed);
-  const double v_max = request.v_max > 0.0 ? request.v_max : speed * (1.0 + 1e-9);
-  const auto limits = trajectory::FeasibilityLimits::from(lqr, v_max, params.accel_mismatch_max);
-  const trajectory::SpeedFit fit = trajectory::fitSpeed(generate, speed, limits, lqr.gravity);
-  if (fit.requested.feasible()) return fit.trajectory;
-  const std::string verdict = trajectory::describeFit(fit, limits);
-  if (!request.scale_if_infeasible || fit.feasible_speed <= 0.0) {
-    throw ConfigError(key, verdict + (fit.feasible_speed > 0.0 ? " (on_infeasible: scale flies it there)" : ""));
+// The paper's paths and CSV files, as given; slower by time scaling.
+Trajectory sampledPath(const TrajectoryRequest& request, const trajectory::TrajectoryParams& params, double gravity) {
+  if (request.generator == "minsnap_fast") {
+    return trajectory::sampleTrajectory(trajectory::paperMinSnapFast(params), params.sample_dt, gravity);
   }
-  std::fprintf(stderr, "sdlqr-mission: %s: %s: flying it at %.3g m/s\n", key.c_str(), verdict.c_str(),
-               fit.feasible_speed);
-  return fit.trajectory;
+  if (request.generator == "minsnap_slow") {
+    return trajectory::sampleTrajectory(trajectory::paperMinSnapSlow(params), params.sample_dt, gravity);
+  }
+  if (request.generator == "ellipse") return trajectory::paperEllipse(params, gravity);
+  return trajectory::readTrajectoryCsv(request.csv_path, params.sampleChecks());
+}
+
+std::function<Trajectory(double)> pathGenerator(const TrajectoryRequest& request,
+                                                const trajectory::TrajectoryParams& params, double gravity,
+                                                double& requested_speed) {
+  if (isSpeedPath(request)) return speedPathGenerator(request, params, gravity, requested_speed);
+  const Trajectory as_given = sampledPath(request, params, gravity);
+  double peak = 0.0;
+  for (const TrajectorySample& s : as_given.samples) peak = std::max(peak, velocity(s.x).norm());
+  requested_speed = peak;
+  return [as_given, peak, gravity](double speed) {
+    return speed == peak || !(peak > 0.0) ? as_given : trajectory::timeScaled(as_given, speed / peak, gravity);
+  };
+}
+
+std::string refusal(const trajectory::SpeedFit& fit, const trajectory::PathCheck& check) {
+  const std::string transitions = check.transitions ? trajectory::describePathCheck(check) : "";
+  if (!check.samples.feasible()) {
+    const std::string speeds = trajectory::describeFit(fit, check.limits);
+    return speeds + (fit.feasible_speed > 0.0 ? " (on_infeasible: scale flies it there)" : "");
+  }
+  return "the way into or out of the path is beyond the vehicle:" + transitions;
 }
 
 }  // namespace
 
 Trajectory buildTrajectory(const TrajectoryRequest& request, const trajectory::TrajectoryParams& base,
-                           const LqrParams& lqr, const std::string& key) {
+                           const PathLimits& limits, const Vec3& hover, double yaw, const std::string& key) {
   trajectory::TrajectoryParams params = base;
   if (request.laps > 0) params.laps = request.laps;
   if (request.height_offset >= 0.0) params.height_offset = request.height_offset;
   if (request.sample_dt > 0.0) params.sample_dt = request.sample_dt;
   if (!params.valid()) throw ConfigError(key, params.invalidReason());
+  const double gravity = limits.lqr.gravity;
 
   Trajectory out;
   try {
-    if (request.generator == "minsnap_fast") {
-      out = trajectory::sampleTrajectory(trajectory::paperMinSnapFast(params), params.sample_dt, lqr.gravity);
-    } else if (request.generator == "minsnap_slow") {
-      out = trajectory::sampleTrajectory(trajectory::paperMinSnapSlow(params), params.sample_dt, lqr.gravity);
-    } else if (request.generator == "circle" || request.generator == "lemniscate" ||
-               request.generator == "waypoints") {
-      out = buildSpeedPath(request, params, lqr, key);
-    } else if (request.generator == "ellipse") {
-      out = trajectory::paperEllipse(params, lqr.gravity);
-    } else {
-      out = trajectory::readTrajectoryCsv(request.csv_path, params.sampleChecks());
+    double speed = 0.0;
+    const auto generate = pathGenerator(request, params, gravity, speed);
+    const double v_max = request.v_max > 0.0     ? request.v_max
+                         : isSpeedPath(request) ? speed * (1.0 + 1e-9)
+                                                : limits.guard.max_speed;
+    const auto feasibility = trajectory::FeasibilityLimits::from(limits.lqr, v_max, params.accel_mismatch_max);
+    out = generate(speed);
+    trajectory::PathCheck check = trajectory::checkPath(out, feasibility, hover, yaw, limits.lqr, limits.transition);
+    if (!check.feasible() && request.on_infeasible == OnInfeasible::kFly) {
+      std::fprintf(stderr, "sdlqr-mission: %s: flown as given (on_infeasible: fly), beyond the vehicle:%s\n",
+                   key.c_str(), trajectory::describePathCheck(check).c_str());
+    } else if (!check.feasible()) {
+      const trajectory::SpeedFit fit = trajectory::fitSpeed(generate, speed, feasibility, gravity);
+      if (request.on_infeasible != OnInfeasible::kScale || fit.feasible_speed <= 0.0) {
+        throw ConfigError(key, refusal(fit, check));
+      }
+      out = fit.trajectory;
+      check = trajectory::checkPath(out, feasibility, hover, yaw, limits.lqr, limits.transition);
+      if (!check.feasible()) throw ConfigError(key, refusal(fit, check));
+      std::fprintf(stderr, "sdlqr-mission: %s: %s: flying it at %.3g m/s\n", key.c_str(),
+                   trajectory::describeFit(fit, feasibility).c_str(), fit.feasible_speed);
     }
   } catch (const ConfigError&) {
     throw;

@@ -14,10 +14,20 @@ Vec4 saturatedSetpoint(const MotorCommand& command, const VehicleParams& vehicle
   return setpoint;
 }
 
+MotorLag::MotorLag(double time_constant, double step)
+    : time_constant_(time_constant), half_step_(0.5 * step), step_(step) {
+  remaining_half_step_ = remaining(half_step_);
+  remaining_step_ = remaining(step_);
+}
+
+double MotorLag::remaining(double tau) const {
+  return time_constant_ > 0.0 ? std::exp(-tau / time_constant_) : 0.0;
+}
+
 Vec4 MotorLag::thrustAt(double tau) const {
   if (tau <= 0.0) return thrust_;
-  const double remaining = time_constant_ > 0.0 ? std::exp(-tau / time_constant_) : 0.0;
-  return setpoint_ + remaining * (thrust_ - setpoint_);
+  const double factor = tau == half_step_ ? remaining_half_step_ : tau == step_ ? remaining_step_ : remaining(tau);
+  return setpoint_ + factor * (thrust_ - setpoint_);
 }
 
 RotorWrench::RotorWrench(const VehicleParams& vehicle, double gravity)
@@ -26,19 +36,23 @@ RotorWrench::RotorWrench(const VehicleParams& vehicle, double gravity)
       mass_(vehicle.mass),
       hover_thrust_per_rotor_(vehicle.hoverThrustPerRotor(gravity)) {}
 
-Wrench RotorWrench::operator()(const Vec4& thrust, const BodyState& s) const {
-  const Vec4 thrust_and_torques = effectiveness_ * thrust;
-  const Mat3 body_to_world = quat::rotationMatrix(s.orientation.normalized());
+RotorWrench::Load RotorWrench::load(const Vec4& thrust) const {
+  Load load;
+  load.thrust_and_torques = effectiveness_ * thrust;
+  load.rotor_speed_ratio = 0.0;
+  for (int i = 0; i < 4; ++i) load.rotor_speed_ratio += std::sqrt(std::max(thrust[i], 0.0) / hover_thrust_per_rotor_);
+  load.rotor_speed_ratio *= 0.25;
+  return load;
+}
 
-  double rotor_speed_ratio = 0.0;  // mean rotor speed over hover rotor speed
-  for (int i = 0; i < 4; ++i) rotor_speed_ratio += std::sqrt(std::max(thrust[i], 0.0) / hover_thrust_per_rotor_);
-  rotor_speed_ratio *= 0.25;
+Wrench RotorWrench::operator()(const Load& load, const BodyState& s) const {
+  const Mat3 body_to_world = quat::rotationMatrix(s.orientation.normalized());
   const Vec3 velocity_body = body_to_world.transpose() * s.velocity;
-  const Vec3 drag_body = -mass_ * rotor_speed_ratio * rotor_drag_.cwiseProduct(velocity_body);
+  const Vec3 drag_body = -mass_ * load.rotor_speed_ratio * rotor_drag_.cwiseProduct(velocity_body);
 
   Wrench w;
-  w.force_world = body_to_world * (Vec3(0.0, 0.0, thrust_and_torques[0]) + drag_body);
-  w.torque_body = thrust_and_torques.tail<3>();
+  w.force_world = body_to_world * (Vec3(0.0, 0.0, load.thrust_and_torques[0]) + drag_body);
+  w.torque_body = load.thrust_and_torques.tail<3>();
   return w;
 }
 

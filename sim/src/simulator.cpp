@@ -66,7 +66,7 @@ Simulator::Simulator(const VehicleParams& vehicle, const SimParams& params, uint
       plant_(plantOf(vehicle, stress.plant)),
       body_properties_(propertiesOf(plant_, params.gravity)),
       rotor_wrench_(plant_, params.gravity),
-      motors_(plant_.motor_time_constant),
+      motors_(plant_.motor_time_constant, params.physicsPeriod()),
       battery_(params.battery, vehicle, params.gravity),
       imu_(params.imu, seed),
       vio_(params.vio, params.physics_rate_hz, seed),
@@ -109,16 +109,16 @@ RejectReason Simulator::addDisturbance(const Disturbance& disturbance) {
 }
 
 // The schedule and the wind are sampled at the start of the step: their edges fall on step boundaries.
-Wrench Simulator::wrenchOf(const Vec4& thrust, const BodyState& s, int64_t start_utime) const {
+Wrench Simulator::wrenchOf(const RotorWrench::Load& rotors, const BodyState& s, int64_t start_utime) const {
   Wrench w;
   if (wind_.enabled() || stress_.plant.body_drag > 0.0) {
     // Drag acts on the velocity relative to the air.
     BodyState in_air = s;
     in_air.velocity -= wind_velocity_;
-    w = rotor_wrench_(thrust, in_air);
+    w = rotor_wrench_(rotors, in_air);
     w.force_world += frameDrag(stress_.plant.body_drag, s.velocity, wind_velocity_);
   } else {
-    w = rotor_wrench_(thrust, s);
+    w = rotor_wrench_(rotors, s);
   }
   const Wrench external = disturbances_.wrenchAt(start_utime, s);
   w.force_world += external.force_world;
@@ -129,10 +129,23 @@ Wrench Simulator::wrenchOf(const Vec4& thrust, const BodyState& s, int64_t start
 StepOutput Simulator::step() {
   const int64_t start_utime = utime();
   disturbances_.expire(start_utime);
+  const PayloadDrop& drop = stress_.payload_drop;
+  if (drop.enabled() && !payload_dropped_ && start_utime >= static_cast<int64_t>(drop.at * 1e6 + 0.5)) {
+    body_properties_.mass = plant_.mass * drop.mass_scale;
+    payload_dropped_ = true;
+  }
   const double thrust_scale = thrustScale();
   wind_velocity_ = wind_.velocity();
+  // The rotors at the step's start, middle (RK4's second and third stages) and end.
+  const double half = 0.5 * dt_;
+  const RotorWrench::Load start = rotor_wrench_.load(thrust_scale * motors_.thrustAt(0.0));
+  const RotorWrench::Load middle = rotor_wrench_.load(thrust_scale * motors_.thrustAt(half));
+  const RotorWrench::Load end = rotor_wrench_.load(thrust_scale * motors_.thrustAt(dt_));
   const auto wrench_at = [&](const BodyState& s, double tau) {
-    return wrenchOf(thrust_scale * motors_.thrustAt(tau), s, start_utime);
+    if (tau <= 0.0) return wrenchOf(start, s, start_utime);
+    if (tau == half) return wrenchOf(middle, s, start_utime);
+    if (tau == dt_) return wrenchOf(end, s, start_utime);
+    return wrenchOf(rotor_wrench_.load(thrust_scale * motors_.thrustAt(tau)), s, start_utime);
   };
   external_force_ = disturbances_.wrenchAt(start_utime, body_).force_world;
 

@@ -6,6 +6,7 @@ PlantOverride::PlantOverride() { declaration().setDefaults(*this); }
 WindParams::WindParams() { declaration().setDefaults(*this); }
 AirborneStart::AirborneStart() { declaration().setDefaults(*this); }
 ThrowEvent::ThrowEvent() { declaration().setDefaults(*this); }
+PayloadDrop::PayloadDrop() { declaration().setDefaults(*this); }
 SimStress::SimStress() { declaration().setDefaults(*this); }
 
 SimStress SimStress::loadFromScenario(const std::string& scenario_path) {
@@ -86,6 +87,17 @@ const ParamTable<ThrowEvent>& ThrowEvent::declaration() {
   return table;
 }
 
+const ParamTable<PayloadDrop>& PayloadDrop::declaration() {
+  static const ParamTable<PayloadDrop> table = [] {
+    using P = PayloadDrop;
+    ParamTable<P> t("a payload let go in flight: the plant's mass drops at a given time");
+    t.number("at", &P::at, -1.0, "s", Range::closed(-1.0, 3600.0), "simulation time of the drop; < 0: none");
+    t.number("mass_scale", &P::mass_scale, 0.85, "-", Range::closed(0.3, 1.0), "mass after the drop over mass before");
+    return t;
+  }();
+  return table;
+}
+
 const ParamTable<SimStress>& SimStress::declaration() {
   static const ParamTable<SimStress> table = [] {
     using P = SimStress;
@@ -94,6 +106,7 @@ const ParamTable<SimStress>& SimStress::declaration() {
     t.section("wind", &P::wind);
     t.section("airborne_start", &P::airborne_start);
     t.section("throw", &P::throw_event);
+    t.section("payload_drop", &P::payload_drop);
     t.check("throw", [](const P& p) { return !(p.throw_event.enabled() && p.airborne_start.enabled()); },
             "choose a throw or an airborne start, not both");
     return t;

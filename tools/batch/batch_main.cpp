@@ -3,10 +3,12 @@
 
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
 #include "sdlqr/batch/runner.hpp"
+#include "sdlqr/batch/slurm_submit.hpp"
 #include "sdlqr/batch/summary.hpp"
 #include "sdlqr/config/cli.hpp"
 #include "sdlqr/tables/csv.hpp"
@@ -80,6 +82,49 @@ int refly(const BatchContext& context, int flight, const std::string& controller
   throw std::runtime_error(batch_dir + "/flights.csv: no row of flight " + std::to_string(flight) + " " + controller);
 }
 
+struct SlurmChoice {
+  bool slurm = false, no_wait = false, dry_run = false;
+  int tasks = 0, nodes = 0, cpus_per_task = 0;
+  std::string partition;
+};
+
+SlurmOptions slurmOptionsOf(const SlurmChoice& c) {
+  if (c.tasks > 0 && c.nodes > 0) throw ConfigError("--nodes", "give --nodes N (whole nodes) or --tasks N, not both");
+  if (c.tasks <= 0 && c.nodes <= 0) throw ConfigError("--tasks", "--slurm needs --tasks N or --nodes N (>= 1)");
+  if (c.nodes > 0 && c.cpus_per_task > 0) throw ConfigError("--cpus-per-task", "a task of --nodes has every core of its node");
+  SlurmOptions o;
+  o.tasks = c.nodes > 0 ? c.nodes : c.tasks;
+  o.cpus_per_task = c.nodes > 0 ? 0 : std::max(1, c.cpus_per_task);
+  o.partition = c.partition;
+  return o;
+}
+
+// Submits the batch as a job array; waits and merges unless told not to. Returns the merged
+// table, or nothing when it only printed the script or submitted.
+std::optional<Table> runOnSlurm(const BatchContext& context, const std::string& spec_path, const std::string& out_dir,
+                                const SlurmChoice& choice) {
+  const SlurmJob job = slurmJobFor(context, spec_path, out_dir, slurmOptionsOf(choice));
+  if (choice.dry_run) {
+    std::cout << sbatchScript(job);
+    return std::nullopt;
+  }
+  const std::string id = submitSlurmBatch(context, job);
+  std::string collect = "./sdlqr batch-merge " + spec_path + " --out " + out_dir;
+  for (int task = 1; task <= job.options.tasks; ++task) collect += " " + shardDir(out_dir, task);
+  std::cerr << "slurm job " << id << ": " << job.options.tasks << " array tasks, script " << slurmDir(job.out_dir)
+            << "/job.sh, task logs " << slurmDir(job.out_dir) << "/task-I.out\n";
+  if (choice.no_wait) {
+    std::cout << id << "\n";
+    std::cerr << "when every task is done, collect with: " << collect << "\n";
+    return std::nullopt;
+  }
+  std::cerr << "waiting (interrupted, the job runs on; collect then with: " << collect << ")\n";
+  Table table = waitAndMerge(context, job, id, ::isatty(STDERR_FILENO) != 0);
+  std::cerr << "batch-merge: " << job.options.tasks << " shards, " << table.rows.size() << " rows -> " << out_dir
+            << "/flights.csv\n";
+  return table;
+}
+
 int run(int argc, const char* const* argv) {
   std::vector<std::string> positional;
   std::string out_dir, shard_text = "1/1", controller, batch_dir;
@@ -96,9 +141,18 @@ int run(int argc, const char* const* argv) {
   parser.addOption("--controller", &controller, "NAME", "with --refly: the controller (default: the first)");
   parser.addOption("--batch", &batch_dir, "DIR", "with --refly: check the row equals this batch's");
   parser.addFlag("--list-parameters", &list, "the keys a batch file may perturb, and its own keys");
+  SlurmChoice slurm;
+  parser.addFlag("--slurm", &slurm.slurm, "submit as a Slurm job array (one shard per task), wait, requeue, merge");
+  parser.addOption("--tasks", &slurm.tasks, "N", "with --slurm: N array tasks of --cpus-per-task cores each");
+  parser.addOption("--cpus-per-task", &slurm.cpus_per_task, "C", "with --tasks: cores per task (default 1)");
+  parser.addOption("--nodes", &slurm.nodes, "N", "with --slurm: N array tasks, each a whole node (every core)");
+  parser.addOption("--partition", &slurm.partition, "P", "with --slurm: the partition (default: the cluster's)");
+  parser.addFlag("--no-wait", &slurm.no_wait, "with --slurm: print the job id and return (collect with merge)");
+  parser.addFlag("--dry-run", &slurm.dry_run, "with --slurm: print the sbatch script, submit nothing");
   parser.setEpilog(
       "Files: DIR/flights.csv (one row per flight), DIR/summary.txt, DIR/batch.yaml, DIR/flights.partial.csv\n"
-      "(the journal a resumed run continues). Exit codes: 0 done, 2 bad batch file or option, 1 other errors.");
+      "(the journal a resumed run continues); with --slurm also DIR/slurm/ (job.sh, job_id, shard-I/, task-I.out).\n"
+      "Exit codes: 0 done, 2 bad batch file or option, 1 other errors (a task that failed twice).");
   parser.parseOrExit(argc, argv);
   if (list) return listParameters();
   const bool merge = !positional.empty() && positional[0] == "merge";
@@ -110,8 +164,16 @@ int run(int argc, const char* const* argv) {
   const BatchContext context = BatchContext::load(positional[0]);
 
   if (refly_flight >= 0) return refly(context, refly_flight, controller.empty() ? context.spec.controllers[0] : controller, out_dir, batch_dir);
+  if ((slurm.no_wait || slurm.dry_run || slurm.tasks || slurm.nodes) && !slurm.slurm) {
+    throw ConfigError("--slurm", "--tasks, --nodes, --no-wait and --dry-run go with --slurm");
+  }
   Table table;
-  if (merge) {
+  if (slurm.slurm) {
+    if (merge || shard_text != "1/1") throw ConfigError("--slurm", "makes its own shards: no --shard, no merge");
+    std::optional<Table> merged = runOnSlurm(context, positional[0], out_dir, slurm);
+    if (!merged) return 0;
+    table = std::move(*merged);
+  } else if (merge) {
     table = mergeShards({positional.begin() + 1, positional.end()}, out_dir, context);
     std::cerr << "batch-merge: " << positional.size() - 1 << " shards, " << table.rows.size() << " rows -> " << out_dir << "/flights.csv\n";
   } else {

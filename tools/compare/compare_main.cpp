@@ -6,6 +6,7 @@
 
 #include "sdlqr/compare/bus_flights.hpp"
 #include "sdlqr/compare/compare_files.hpp"
+#include "sdlqr/compare/headline.hpp"
 #include "sdlqr/config/cli.hpp"
 
 namespace sdlqr::compare {
@@ -17,9 +18,13 @@ int run(int argc, const char* const* argv) {
   int jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   long long seed = -1;
   bool quiet = false;
-  ArgParser parser("sdlqr-compare", "Every controller law flies a benchmark on the in-process closed loop.");
-  parser.allowPositional(&positional, "BENCHMARK.yaml");
-  parser.addOption("--out", &out_dir, "DIR", "folder of report.md, flights.csv, sweep.csv, tracks/ (created)");
+  ArgParser parser("sdlqr-compare",
+                   "Every controller law flies one or more benchmarks on the in-process closed loop (one vehicle\n"
+                   "each: the headline compares them per vehicle and law).");
+  parser.allowPositional(&positional, "BENCHMARK.yaml...");
+  parser.addOption("--out", &out_dir, "DIR",
+                   "folder of report.md, flights.csv, sweep.csv, tracks/ (created); with several benchmarks\n"
+                   "one folder each (DIR/<benchmark>/) and DIR/report.md the headline of them all");
   parser.addOption("--controllers", &controllers, "A,B", "only these controllers (default: the benchmark's)");
   parser.addOption("--scenarios", &scenarios, "A,B", "only these experiments (speed_sweep: the sweep)");
   parser.addOption("--seed", &seed, "N", "every flight's noise seed (default: the benchmark's, else each scenario's)");
@@ -33,16 +38,23 @@ int run(int argc, const char* const* argv) {
       "(config/compare/benchmark.yaml). Exit codes: 0 written (whatever passed), 2 bad benchmark file or\n"
       "option, 1 other errors.");
   parser.parseOrExit(argc, argv);
-  if (positional.size() != 1) throw ConfigError("BENCHMARK", "name one benchmark file (see --help)");
+  if (positional.empty()) throw ConfigError("BENCHMARK", "name a benchmark file (see --help)");
   if (out_dir.empty() && bus_files.empty()) throw ConfigError("--out", "name the output folder");
   if (jobs < 1) throw ConfigError("--jobs", "must be >= 1");
   if (seed < -1) throw ConfigError("--seed", "must be >= 0");
-  Benchmark benchmark = Benchmark::load(positional[0]);
-  if (!controllers.empty()) selectControllers(benchmark, controllers);
-  if (!scenarios.empty()) selectScenarios(benchmark, scenarios);
-  if (seed >= 0) benchmark.seed = seed;
+  const bool several = positional.size() > 1;
+  if (several && !scenarios.empty()) throw ConfigError("--scenarios", "selects experiments of one benchmark file");
+  if (several && !bus_files.empty()) throw ConfigError("--bus-files", "writes the flights of one benchmark file");
+  std::vector<Benchmark> benchmarks;
+  for (const std::string& path : positional) {
+    Benchmark benchmark = Benchmark::load(path);
+    if (!controllers.empty()) selectControllers(benchmark, controllers);
+    if (!scenarios.empty()) selectScenarios(benchmark, scenarios);
+    if (seed >= 0) benchmark.seed = seed;
+    benchmarks.push_back(benchmark);
+  }
   if (!bus_files.empty()) {
-    const int flights = writeBusFlights(benchmark, bus_files);
+    const int flights = writeBusFlights(benchmarks[0], bus_files);
     std::fprintf(stderr, "compare: %d flights to fly over the bus -> %s/plan.txt\n", flights, bus_files.c_str());
     return 0;
   }
@@ -50,10 +62,18 @@ int run(int argc, const char* const* argv) {
   CompareOptions options;
   options.jobs = jobs;
   options.progress = quiet ? nullptr : stderr;
-  const CompareResult result = runCompare(benchmark, options);
-  writeCompareFiles(benchmark, result, out_dir);
-  std::fprintf(stderr, "compare: %d flights, %.0f s simulated in %.1f s on %d jobs -> %s/report.md\n", result.flown,
-               result.simulated_s, result.wall_s, jobs, out_dir.c_str());
+  std::vector<CompareResult> results;
+  for (const Benchmark& benchmark : benchmarks) {
+    results.push_back(runCompare(benchmark, options));
+    const std::string dir = several ? out_dir + "/" + benchmarkName(benchmark) : out_dir;
+    writeCompareFiles(benchmark, results.back(), dir);
+    std::fprintf(stderr, "compare: %d flights, %.0f s simulated in %.1f s on %d jobs -> %s/report.md\n",
+                 results.back().flown, results.back().simulated_s, results.back().wall_s, jobs, dir.c_str());
+  }
+  if (several) {
+    writeHeadlineFile(benchmarks, results, out_dir);
+    std::fprintf(stderr, "compare: headline of %zu benchmarks -> %s/report.md\n", benchmarks.size(), out_dir.c_str());
+  }
   return 0;
 }
 

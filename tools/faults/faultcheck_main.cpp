@@ -1,6 +1,7 @@
 // sdlqr-faultcheck: what a fault test measured, from its flight log. Prints each process's last
 // HEARTBEAT counters that are rejections, watchdogs or injected faults, and fails unless every
-// --require'd counter is non-zero in some process and every process kept its heartbeat to the end
+// --require'd counter is non-zero in some process, every --forbid'den one zero in all, and every
+// process kept its heartbeat to the end
 // of the log (liveness.hpp: no gap and no silence at the end longer than --max-silence).
 
 #include <algorithm>
@@ -108,7 +109,7 @@ bool checkController(const logger::FlightLog& log, const std::string& text, cons
 
 int main(int argc, char** argv) {
   return runMain("sdlqr-faultcheck", [&] {
-    std::string required_text, vehicle;
+    std::string required_text, forbidden_text, vehicle;
     double max_silence = 2.5;
     bool require_complete = false;
     std::string hover_text;
@@ -116,6 +117,7 @@ int main(int argc, char** argv) {
     ArgParser parser("sdlqr-faultcheck",
                      "Reads a flight log and prints the rejection, watchdog and fault counters of every process.");
     parser.addOption("--require", &required_text, "A,B,...", "counters that must be > 0 in some process");
+    parser.addOption("--forbid", &forbidden_text, "A,B,...", "counters that must stay 0 in every process");
     parser.addOption("--max-silence", &max_silence, "S",
                      "longest heartbeat gap of any process, and longest silence before the end of the log,\n"
                      "wall time (default 2.5)");
@@ -192,7 +194,8 @@ int main(int argc, char** argv) {
       for (const auto& [name, value] : hb->counters) {
         totals[name] += value;
         const bool interesting = name.rfind("reject.", 0) == 0 || name.rfind("watchdog.", 0) == 0 ||
-                                 name.rfind("fault.", 0) == 0 || name.rfind("fuzz.", 0) == 0;
+                                 name.rfind("fault.", 0) == 0 || name.rfind("fuzz.", 0) == 0 ||
+                                 name.rfind("failsafe.", 0) == 0 || name.rfind("mavlink.drop.", 0) == 0;
         if (interesting && value != 0) std::cout << "    " << name << " " << value << "\n";
       }
     }
@@ -240,6 +243,11 @@ int main(int argc, char** argv) {
       const int64_t total = totals.count(name) ? totals[name] : 0;
       std::cout << (total > 0 ? "ok   " : "FAIL ") << name << " = " << total << " over all processes\n";
       ok = ok && total > 0;
+    }
+    for (const std::string& name : splitList(forbidden_text)) {
+      const int64_t total = totals.count(name) ? totals[name] : 0;
+      std::cout << (total == 0 ? "ok   " : "FAIL ") << name << " = " << total << " over all processes (must stay 0)\n";
+      ok = ok && total == 0;
     }
     if (!gains_outage.empty()) ok = checkGains(log, gains_outage, fallback_timeout, max_gains_resume) && ok;
     if (!estimator_outage.empty()) {

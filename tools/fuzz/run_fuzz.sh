@@ -11,14 +11,15 @@ seconds="${2:-20}"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 # shellcheck source=../../tests/support/prerequisite.sh
 . "$root/tests/support/prerequisite.sh"
-for harness in fuzz_messages fuzz_config fuzz_seeds; do
+for harness in fuzz_messages fuzz_config fuzz_mavlink fuzz_seeds; do
   [ -x "$build/bin/$harness" ] ||
     missing_prerequisite "run_fuzz: $build/bin/$harness" \
       "the sanitizer build compiled by clang++ with libclang-rt-14-dev builds it: ./sdlqr setup, then ./sdlqr test"
 done
 out="$build/fuzz"
-mkdir -p "$out/corpus_messages" "$out/corpus_config" "$out/seeds_messages" "$out/artifacts"
-"$build/bin/fuzz_seeds" "$out/seeds_messages" || exit 1
+mkdir -p "$out/corpus_messages" "$out/corpus_config" "$out/corpus_mavlink" "$out/seeds_messages" "$out/seeds_mavlink" \
+  "$out/artifacts"
+"$build/bin/fuzz_seeds" "$out/seeds_messages" "$out/seeds_mavlink" || exit 1
 cp "$root/config/quad255.yaml" "$out/corpus_config/seed_quad255.yaml"
 
 run() {  # name corpus seeds...
@@ -40,5 +41,8 @@ run fuzz_messages "$out/corpus_messages" "$out/seeds_messages" &
 messages=$!
 run fuzz_config "$out/corpus_config"
 status=$?
+# The MAVLink parser and the PX4 bridge (docs/px4.md), after the config harness: half the time.
+seconds=$(((seconds + 1) / 2))
+run fuzz_mavlink "$out/corpus_mavlink" "$out/seeds_mavlink" || status=1
 wait "$messages" || status=1
 exit "$status"

@@ -59,10 +59,10 @@ int waitForHeartbeats(bus::Node& bus, const std::string& names, double timeout_s
   return 1;
 }
 
-// --at-sim-time: prints "sim time S" (S as given) as soon as the simulation clock (SIM_CLOCK of this
-// vehicle) reaches each mark, then exits 0; 1 when the clock has not reached them after timeout_s
-// of wall time. A test injects its faults at these lines, on the flight's own time: a machine that
-// stalls for seconds stalls the simulation with it, so a fault never lands late in the flight.
+// --at-sim-time: prints "sim time S" (S as given) as soon as the simulation clock (SIM_CLOCK or
+// SIM_TRUTH of this vehicle) reaches each mark, then exits 0; 1 when the clock has not reached them
+// after timeout_s of wall time. A test injects its faults at these lines, on the flight's own time:
+// a machine that stalls for seconds stalls the simulation with it, so a fault never lands late.
 int printSimTimeMarks(bus::Node& bus, const std::string& list, double timeout_s) {
   std::vector<std::pair<double, std::string>> marks;  // seconds, as written
   for (size_t start = 0; start < list.size();) {
@@ -82,11 +82,15 @@ int printSimTimeMarks(bus::Node& bus, const std::string& list, double timeout_s)
   }
   if (marks.empty()) throw std::invalid_argument("--at-sim-time: expected seconds separated by commas");
   size_t next = 0;
-  bus.subscribe<sim_clock_t>(channel::kSimClock, [&](const sim_clock_t& clock) {
-    for (; next < marks.size() && static_cast<double>(clock.utime) >= marks[next].first * 1e6; ++next) {
+  const auto reached = [&](int64_t sim_us) {
+    for (; next < marks.size() && static_cast<double>(sim_us) >= marks[next].first * 1e6; ++next) {
       std::cout << "sim time " << marks[next].second << std::endl;
     }
-  }, 16);
+  };
+  bus.subscribe<sim_clock_t>(channel::kSimClock, [&](const sim_clock_t& clock) { reached(clock.utime); }, 16);
+  // The simulator's truth carries the same time: on an emulated autopilot's host (sdlqr-px4-emulator)
+  // it is the clock heard there, the vehicle's SIM_CLOCK coming from the bridge across the link.
+  bus.subscribe<sim_truth_t>(channel::kSimTruth, [&](const sim_truth_t& truth) { reached(truth.utime); }, 16);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
   while (next < marks.size() && bus.spin(20) && std::chrono::steady_clock::now() <= deadline) {
   }
@@ -120,7 +124,7 @@ int main(int argc, char** argv) {
                      "only wait until each named process (e.g. sdlqr-estimator) has sent a HEARTBEAT on this\n"
                      "vehicle's channel, then exit 0 (1 after --timeout)");
     parser.addOption("--at-sim-time", &sim_time_marks, "S1,S2,...",
-                     "only print 'sim time S' as the simulation clock (SIM_CLOCK) reaches each S seconds,\n"
+                     "only print 'sim time S' as the simulation clock (SIM_CLOCK, SIM_TRUTH) reaches each S seconds,\n"
                      "then exit 0 (1 after --timeout): fault injections timed on the flight's own clock");
     parser.addOption("--timeout", &wait_timeout_s, "S",
                      "wall seconds for --wait-for (default 10) or --at-sim-time (default 120)");

@@ -14,7 +14,9 @@ namespace {
 // The time scaling puts the top speed at v_max to rounding: do not fail on the last bits.
 constexpr double kRelativeSlack = 1e-9;
 
-void account(FeasibilityReport& report, const Vec3& velocity, const Input& u) {
+}  // namespace
+
+void accountSample(FeasibilityReport& report, const Vec3& velocity, const Input& u) {
   report.max_speed = std::max(report.max_speed, velocity.norm());
   report.max_thrust = std::max(report.max_thrust, u[kThrust]);
   report.min_thrust = std::min(report.min_thrust, u[kThrust]);
@@ -22,15 +24,13 @@ void account(FeasibilityReport& report, const Vec3& velocity, const Input& u) {
   ++report.points;
 }
 
-void judge(FeasibilityReport& report, const FeasibilityLimits& limits) {
+void judgeReport(FeasibilityReport& report, const FeasibilityLimits& limits) {
   report.speed_ok = report.max_speed <= limits.v_max * (1.0 + kRelativeSlack);
   report.max_thrust_ok = report.max_thrust <= limits.c_max;
   report.min_thrust_ok = report.min_thrust >= limits.c_min;
   report.body_rate_ok = report.max_body_rate <= limits.omega_max;
   report.consistency_ok = !(report.max_accel_mismatch > limits.accel_mismatch_max);
 }
-
-}  // namespace
 
 FeasibilityLimits FeasibilityLimits::from(const LqrParams& lqr, double v_max, double accel_mismatch_max) {
   FeasibilityLimits limits;
@@ -51,12 +51,12 @@ FeasibilityReport checkFeasibility(const MinSnapTrajectory& polynomial, const Fe
   for (long i = 0; i <= steps; ++i) {
     const FlatOutput flat = polynomial.evaluate(duration * static_cast<double>(i) / static_cast<double>(steps));
     const FlatReference ref = flatToReference(flat, gravity);
-    account(report, flat.velocity, ref.u);
+    accountSample(report, flat.velocity, ref.u);
     if (ref.singular) report.min_thrust = std::min(report.min_thrust, 0.0);
   }
   // The grid can miss the top speed by a hair; the refined search does not.
   report.max_speed = std::max(report.max_speed, maxSpeed(polynomial, grid_dt));
-  judge(report, limits);
+  judgeReport(report, limits);
   return report;
 }
 
@@ -67,7 +67,7 @@ FeasibilityReport checkFeasibility(const Trajectory& trajectory, const Feasibili
     return Vec3(s.u[kThrust] * quat::bodyZ(orientation(s.x).normalized()) - Vec3(0.0, 0.0, gravity));
   };
   for (std::size_t k = 0; k < samples.size(); ++k) {
-    account(report, velocity(samples[k].x), samples[k].u);
+    accountSample(report, velocity(samples[k].x), samples[k].u);
     if (k == 0) continue;
     const double dt = samples[k].t - samples[k - 1].t;
     if (!(dt > 0.0)) continue;
@@ -76,8 +76,24 @@ FeasibilityReport checkFeasibility(const Trajectory& trajectory, const Feasibili
     const double mismatch = (demanded - produced).norm();
     report.max_accel_mismatch = k == 1 ? mismatch : std::max(report.max_accel_mismatch, mismatch);
   }
-  judge(report, limits);
+  judgeReport(report, limits);
   return report;
+}
+
+std::string describeViolations(const FeasibilityReport& r, const FeasibilityLimits& limits) {
+  std::string text;
+  char part[128];
+  const auto fail = [&](bool ok, const char* what, double value, const char* relation, double limit, const char* unit) {
+    if (ok) return;
+    std::snprintf(part, sizeof part, " %s %.3g %s %.3g %s;", what, value, relation, limit, unit);
+    text += part;
+  };
+  fail(r.speed_ok, "max speed", r.max_speed, ">", limits.v_max, "m/s");
+  fail(r.max_thrust_ok, "max thrust", r.max_thrust, ">", limits.c_max, "m/s^2");
+  fail(r.min_thrust_ok, "min thrust", r.min_thrust, "<", limits.c_min, "m/s^2");
+  fail(r.body_rate_ok, "max |omega|", r.max_body_rate, ">", limits.omega_max, "rad/s");
+  fail(r.consistency_ok, "accel mismatch", r.max_accel_mismatch, ">", limits.accel_mismatch_max, "m/s^2");
+  return text;
 }
 
 std::string formatReport(const FeasibilityReport& report, const FeasibilityLimits& limits) {

@@ -1,5 +1,10 @@
 #include "sdlqr/trajectory/guard.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "sdlqr/math/quaternion.hpp"
+
 namespace sdlqr::trajectory {
 
 TrajectoryGuardParams::TrajectoryGuardParams() { declaration().setDefaults(*this); }
@@ -7,9 +12,13 @@ TrajectoryGuardParams::TrajectoryGuardParams() { declaration().setDefaults(*this
 const ParamTable<TrajectoryGuardParams>& TrajectoryGuardParams::declaration() {
   static const ParamTable<TrajectoryGuardParams> table = [] {
     using P = TrajectoryGuardParams;
-    ParamTable<P> t("trajectory guard: beyond these the trajectory is aborted into a hold where the vehicle is");
+    ParamTable<P> t("trajectory guard: beyond these the trajectory is aborted into a recovery (level, stop) and a hold");
     t.number("max_path_error", &P::max_path_error, 1.0, "m", Range::above(0.0), "estimate to reference distance");
     t.number("max_speed", &P::max_speed, 6.0, "m/s", Range::above(0.0), "estimated speed");
+    t.number("max_tilt_deg", &P::max_tilt_deg, 70.0, "deg", Range::openClosed(0.0, 180.0),
+             "estimated tilt of body z from world z");
+    t.number("max_attitude_error_deg", &P::max_attitude_error_deg, 45.0, "deg", Range::openClosed(0.0, 180.0),
+             "estimated attitude to reference attitude angle");
     t.list("fence_min", &P::fence_min, {-10.0, -10.0, -1.0}, "m", Range::finite(), "geofence box, lower corner (world)");
     t.list("fence_max", &P::fence_max, {10.0, 10.0, 10.0}, "m", Range::finite(), "geofence box, upper corner (world)");
     t.check("fence_max", [](const P& p) { return (p.fence_max - p.fence_min).minCoeff() > 0.0; },
@@ -25,16 +34,29 @@ const char* toString(GuardTrip trip) {
     case GuardTrip::kPathError: return "path error";
     case GuardTrip::kSpeed: return "speed";
     case GuardTrip::kGeofence: return "geofence";
+    case GuardTrip::kTilt: return "tilt";
+    case GuardTrip::kAttitudeError: return "attitude error";
   }
   return "?";
 }
 
-GuardTrip checkGuard(const TrajectoryGuardParams& guard, const Vec3& position, const Vec3& velocity,
-                     const Vec3& reference_position) {
-  const bool inside = (position - guard.fence_min).minCoeff() >= 0.0 && (guard.fence_max - position).minCoeff() >= 0.0;
+double attitudeError(const Quat& a, const Quat& b) {
+  const double cosine_half = std::abs(a.normalized().dot(b.normalized()));
+  return 2.0 * std::acos(std::min(1.0, cosine_half));
+}
+
+GuardTrip checkGuard(const TrajectoryGuardParams& guard, const State& estimate, const State& reference) {
+  const Vec3 p = position(estimate);
+  const bool inside = (p - guard.fence_min).minCoeff() >= 0.0 && (guard.fence_max - p).minCoeff() >= 0.0;
   if (!inside) return GuardTrip::kGeofence;
-  if (velocity.norm() > guard.max_speed) return GuardTrip::kSpeed;
-  if ((position - reference_position).norm() > guard.max_path_error) return GuardTrip::kPathError;
+  if (velocity(estimate).norm() > guard.max_speed) return GuardTrip::kSpeed;
+  constexpr double kDegree = M_PI / 180.0;
+  const Quat q = orientation(estimate);
+  if (quat::tilt(q) > guard.max_tilt_deg * kDegree) return GuardTrip::kTilt;
+  if (attitudeError(q, orientation(reference)) > guard.max_attitude_error_deg * kDegree) {
+    return GuardTrip::kAttitudeError;
+  }
+  if ((p - position(reference)).norm() > guard.max_path_error) return GuardTrip::kPathError;
   return GuardTrip::kNone;
 }
 

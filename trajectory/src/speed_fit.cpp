@@ -1,6 +1,11 @@
 #include "sdlqr/trajectory/speed_fit.hpp"
 
+#include <cmath>
 #include <cstdio>
+
+#include "sdlqr/math/quaternion.hpp"
+#include "sdlqr/trajectory/flatness.hpp"
+#include "sdlqr/trajectory/transition.hpp"
 
 namespace sdlqr::trajectory {
 
@@ -26,22 +31,40 @@ SpeedFit fitSpeed(const std::function<Trajectory(double)>& generate, double requ
   return fit;
 }
 
+Trajectory timeScaled(const Trajectory& trajectory, double factor, double gravity) {
+  Trajectory out = trajectory;
+  const auto& in = trajectory.samples;
+  const size_t n = in.size();
+  for (size_t k = 0; k < n; ++k) {
+    // Thrust and heading rates by central differences (one-sided at the ends).
+    const size_t a = k > 0 ? k - 1 : k, b = k + 1 < n ? k + 1 : k;
+    const double span = b > a ? in[b].t - in[a].t : 0.0;
+    const double thrust_rate = span > 0.0 ? (in[b].u[kThrust] - in[a].u[kThrust]) / span : 0.0;
+    const double yaw_change = std::remainder(quat::yaw(orientation(in[b].x)) - quat::yaw(orientation(in[a].x)), 2.0 * M_PI);
+    const FlatState s = flatStateOf(in[k].x, in[k].u, thrust_rate, gravity);
+    FlatOutput f;
+    f.t = in[k].t / factor;
+    f.position = s.position;
+    f.velocity = factor * s.velocity;
+    f.acceleration = factor * factor * s.acceleration;
+    f.jerk = factor * factor * factor * s.jerk;
+    f.yaw = s.yaw;
+    f.yaw_rate = span > 0.0 ? factor * yaw_change / span : 0.0;
+    const FlatReference ref = flatToReference(f, gravity);
+    out.samples[k].t = f.t;
+    out.samples[k].x = ref.x;
+    out.samples[k].u = ref.u;
+  }
+  return out;
+}
+
 std::string describeFit(const SpeedFit& fit, const FeasibilityLimits& limits) {
   const FeasibilityReport& r = fit.requested;
   char text[320];
   std::snprintf(text, sizeof text, "at %.3g m/s the path is %s", fit.requested_speed,
                 r.feasible() ? "feasible" : "beyond the vehicle:");
   std::string line = text;
-  const auto fail = [&](bool ok, const char* what, double value, const char* relation, double limit, const char* unit) {
-    if (ok) return;
-    std::snprintf(text, sizeof text, " %s %.3g %s %.3g %s;", what, value, relation, limit, unit);
-    line += text;
-  };
-  fail(r.speed_ok, "max speed", r.max_speed, ">", limits.v_max, "m/s");
-  fail(r.max_thrust_ok, "max thrust", r.max_thrust, ">", limits.c_max, "m/s^2");
-  fail(r.min_thrust_ok, "min thrust", r.min_thrust, "<", limits.c_min, "m/s^2");
-  fail(r.body_rate_ok, "max |omega|", r.max_body_rate, ">", limits.omega_max, "rad/s");
-  fail(r.consistency_ok, "accel mismatch", r.max_accel_mismatch, ">", limits.accel_mismatch_max, "m/s^2");
+  line += describeViolations(r, limits);
   if (r.feasible()) return line;
   if (fit.feasible_speed > 0.0) {
     std::snprintf(text, sizeof text, " feasible up to %.3g m/s", fit.feasible_speed);

@@ -109,7 +109,9 @@ TrajectoryTracker::TrajectoryTracker(const TrajectoryTracker& other)
       temporal_(other.temporal_),
       active_(other.active_ == &other.spatial_ ? static_cast<TrackingScheme*>(&spatial_) : &temporal_),
       last_(other.last_),
-      loaded_(other.loaded_) {
+      loaded_(other.loaded_),
+      start_time_(other.start_time_),
+      start_window_(other.start_window_) {
   spatial_.rebind(&trajectory_);
   temporal_.rebind(&trajectory_);
 }
@@ -123,13 +125,24 @@ std::string TrajectoryTracker::load(Trajectory trajectory, double start_time, co
     State& x = trajectory_.samples[k].x;
     orientation(x) = quat::sameHemisphere(orientation(x), orientation(trajectory_.samples[k - 1].x));
   }
-  spatial_.restart();
-  temporal_.setStartTime(start_time);
   active_ = trajectory_.tracking == ReferenceMode::kTemporal ? static_cast<TrackingScheme*>(&temporal_)
                                                               : static_cast<TrackingScheme*>(&spatial_);
-  last_ = referenceOn(trajectory_, 1, 0.0, 0, false);
+  restart(start_time);
   loaded_ = true;
   return {};
+}
+
+void TrajectoryTracker::restart(double start_time) {
+  spatial_.restart();
+  temporal_.setStartTime(start_time);
+  start_time_ = start_time;
+  last_ = referenceOn(trajectory_, 1, 0.0, 0, false);
+  // The start by the clock lasts until the path's first sample at kStartSpeed is due.
+  start_window_ = 0.0;
+  for (const TrajectorySample& s : trajectory_.samples) {
+    start_window_ = s.t - trajectory_.samples.front().t;
+    if (velocity(s.x).norm() >= kStartSpeed) break;
+  }
 }
 
 bool TrajectoryTracker::setMode(ReferenceMode mode, double now) {
@@ -144,6 +157,12 @@ bool TrajectoryTracker::setMode(ReferenceMode mode, double now) {
 
 TrackingOutput TrajectoryTracker::update(double now, const Vec3& position) {
   last_ = active_->update(now, position);
+  if (active_ != &spatial_ || !(now - start_time_ < start_window_)) return last_;
+  const TrackingOutput clock = temporal_.at(now - start_time_);
+  if (clock.time > last_.time) {
+    spatial_.resumeFrom(clock, now);
+    last_ = clock;
+  }
   return last_;
 }
 

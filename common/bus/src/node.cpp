@@ -134,16 +134,19 @@ Node::Endpoint::~Endpoint() = default;
 namespace {
 
 constexpr size_t kMaxEndpoints = 16;  // the split layout has 8 URLs
-using PollSet = std::array<pollfd, kMaxEndpoints>;
+constexpr size_t kMaxWatched = 4;     // watchDescriptor's, beside them
+using PollSet = std::array<pollfd, kMaxEndpoints + kMaxWatched>;
 
-// The notify descriptor of each receiving connection (LCM makes it readable per message).
-template <class Endpoints>
-size_t fillPollSet(const Endpoints& receiving, PollSet& fds) {
+// The notify descriptor of each receiving connection (LCM makes it readable per message), then
+// the watched descriptors of other inputs (Node::watchDescriptor).
+template <class Endpoints, class Watched>
+size_t fillPollSet(const Endpoints& receiving, const Watched& watched, PollSet& fds) {
   for (size_t i = 0; i < receiving.size(); ++i) {
     const auto& e = *receiving[i];
     fds[i] = {e.inbox ? e.inbox->fd() : e.lcm->getFileno(), POLLIN, 0};
   }
-  return receiving.size();
+  for (size_t i = 0; i < watched.size(); ++i) fds[receiving.size() + i] = {watched[i].fd, POLLIN, 0};
+  return receiving.size() + watched.size();
 }
 
 // LCM's channel regex semantics (POSIX extended, the whole name must match).
@@ -527,11 +530,17 @@ bool Node::spin(int timeout_ms) {
 
 int Node::handleReady(int timeout_ms) {
   PollSet fds{};
-  const size_t count = fillPollSet(receiving_, fds);
+  const size_t count = fillPollSet(receiving_, watched_, fds);
   const int ready = poll(fds.data(), count, timeout_ms);
   if (ready <= 0) return ready < 0 && errno != EINTR ? -1 : 0;
   int handled = 0;
   for (size_t i = 0; i < count; ++i) {
+    if ((fds[i].revents & (POLLIN | POLLERR | POLLHUP)) == 0) continue;
+    if (i >= receiving_.size()) {
+      watched_[i - receiving_.size()].on_readable();
+      ++handled;
+      continue;
+    }
     if ((fds[i].revents & POLLIN) == 0) continue;
     Endpoint& e = *receiving_[i];
     if (e.inbox ? !drainInbox(e) : lcm_handle(e.lcm->getUnderlyingLCM()) != 0) return -1;
@@ -547,10 +556,17 @@ void Node::drain(int timeout_ms) {
 
 bool Node::waitReadable(std::chrono::steady_clock::duration timeout) {
   PollSet fds{};
-  const size_t count = fillPollSet(receiving_, fds);
+  const size_t count = fillPollSet(receiving_, watched_, fds);
   const auto ns = std::max<int64_t>(0, std::chrono::duration_cast<std::chrono::nanoseconds>(timeout).count());
   const timespec wait{static_cast<time_t>(ns / 1000000000), static_cast<long>(ns % 1000000000)};
   return ppoll(fds.data(), count, &wait, nullptr) > 0;
+}
+
+void Node::watchDescriptor(int fd, std::function<void()> on_readable) {
+  if (watched_.size() == kMaxWatched) {
+    throw std::invalid_argument("more than 4 descriptors to watch beside the bus");
+  }
+  watched_.push_back({fd, std::move(on_readable)});
 }
 
 void Node::shutdown() {

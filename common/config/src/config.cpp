@@ -24,7 +24,8 @@ YAML::Node loadYamlFile(const std::string& path) {
 
 const std::vector<std::string>& vehicleFileSections() {
   static const std::vector<std::string> sections{"vehicle",    "lqr",      "sim",        "estimator", "controller",
-                                                 "gains",      "lowlevel", "trajectory", "faults",    "validation"};
+                                                 "gains",      "lowlevel", "trajectory", "faults",    "validation",
+                                                 "px4",        "px4_emulator"};
   return sections;
 }
 

@@ -24,9 +24,12 @@ bool stateInRange(const State& x, const ValidationLimits& limits) {
          velocity(x).norm() <= limits.max_velocity;
 }
 
+// A model's thrust gain: produced over commanded thrust (the adaptive law bounds its estimate well inside).
+bool thrustGainInRange(double gain) { return gain >= 0.1 && gain <= 10.0; }
+
 bool modeKnown(ReferenceMode mode) {
   const auto v = static_cast<int8_t>(mode);
-  return v >= 0 && v <= 3;
+  return v >= 0 && v <= static_cast<int8_t>(ReferenceMode::kTransition);
 }
 
 }  // namespace
@@ -80,11 +83,15 @@ RejectReason validate(const GainSet& m, const ValidationLimits& limits) {
       !std::isfinite(m.dt)) {
     return RejectReason::kNonFinite;
   }
-  if (!finite(m.K_aug) || !std::isfinite(m.thrust_time_constant)) return RejectReason::kNonFinite;
+  if (!finite(m.K_aug) || !std::isfinite(m.thrust_time_constant) || !std::isfinite(m.thrust_gain)) {
+    return RejectReason::kNonFinite;
+  }
   if (m.status != SolveStatus::kOk) return RejectReason::kBadStatus;
   const auto method = static_cast<int8_t>(m.method);
   if (method < 0 || method > 1 || !isControlLaw(m.law)) return RejectReason::kBadEnum;
-  if (m.K_aug.cwiseAbs().maxCoeff() > limits.max_gain || m.thrust_time_constant < 0.0) return RejectReason::kOutOfRange;
+  if (m.K_aug.cwiseAbs().maxCoeff() > limits.max_gain || m.thrust_time_constant < 0.0 || !thrustGainInRange(m.thrust_gain)) {
+    return RejectReason::kOutOfRange;
+  }
   if (!unitQuaternion(orientation(m.x_lin), limits)) return RejectReason::kQuaternionNorm;
   if (m.K.cwiseAbs().maxCoeff() > limits.max_gain || !(m.dt > 0.0 && m.dt <= 1.0) || m.utime < 0) {
     return RejectReason::kOutOfRange;
@@ -103,7 +110,10 @@ RejectReason validate(const RateCommand& m, const ValidationLimits& limits) {
 }
 
 RejectReason validate(const Reference& m, const ValidationLimits& limits) {
-  if (!finite(m.x) || !finite(m.u) || !std::isfinite(m.gamma)) return RejectReason::kNonFinite;
+  if (!finite(m.x) || !finite(m.u) || !std::isfinite(m.gamma) || !std::isfinite(m.thrust_gain)) {
+    return RejectReason::kNonFinite;
+  }
+  if (!thrustGainInRange(m.thrust_gain)) return RejectReason::kOutOfRange;
   if (!modeKnown(m.mode)) return RejectReason::kBadEnum;
   if (!unitQuaternion(orientation(m.x), limits)) return RejectReason::kQuaternionNorm;
   if (!stateInRange(m.x, limits) || bodyRate(m.u).norm() > limits.max_body_rate || m.u[kThrust] < 0.0 ||

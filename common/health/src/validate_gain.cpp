@@ -23,7 +23,7 @@ double closedLoopSpectralRadius(const GainSet& m) {
   State x = m.x_lin;
   orientation(x).normalize();
   const TangentBasis E = tangentBasis(orientation(x));
-  const Linearization linearization = linearize(x, m.u_lin);
+  const Linearization linearization = linearize(x, m.u_lin, m.thrust_gain);
   const TangentMatrix A = E.transpose() * linearization.A * E;
   const TangentInputMatrix B = E.transpose() * linearization.B;
   const DiscreteSystem<kTangentDim, kInputDim> discrete = discretizeZoh<kTangentDim, kInputDim>(A, B, m.dt);

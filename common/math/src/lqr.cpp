@@ -34,9 +34,9 @@ const char* dareFailureReason(SolveStatus status) {
   }
 }
 
-LqrResult solveTangent(const State& x, const Input& u, const LqrParams& params) {
+LqrResult solveTangent(const State& x, const Input& u, const LqrParams& params, double thrust_gain) {
   const TangentBasis E = tangentBasis(orientation(x));
-  const TangentSystem system = projectToTangent(linearize(x, u), E, params.q_diag);
+  const TangentSystem system = projectToTangent(linearize(x, u, thrust_gain), E, params.q_diag);
   const DiscreteSystem<kTangentDim, kInputDim> discrete = discretizeZoh<kTangentDim, kInputDim>(system.A, system.B, params.dt);
   if (!discrete.A.allFinite() || !discrete.B.allFinite()) {
     return failure(SolveStatus::kNumericalFailure, "non-finite discretized system");
@@ -60,8 +60,8 @@ LqrResult solveTangent(const State& x, const Input& u, const LqrParams& params) 
   return result;
 }
 
-LqrResult solveIterative(const State& x, const Input& u, const LqrParams& params) {
-  const Linearization linearization = linearize(x, u);
+LqrResult solveIterative(const State& x, const Input& u, const LqrParams& params, double thrust_gain) {
+  const Linearization linearization = linearize(x, u, thrust_gain);
   const DiscreteSystem<kStateDim, kInputDim> discrete =
       discretizeZoh<kStateDim, kInputDim>(linearization.A, linearization.B, params.dt);
   if (!discrete.A.allFinite() || !discrete.B.allFinite()) {
@@ -142,8 +142,9 @@ GainMatrix liftTangentGain(const TangentGainMatrix& K_r, const TangentBasis& E) 
   return K;
 }
 
-LqrResult solveLqr(const State& x_lin, const Input& u_lin, const LqrParams& params) {
+LqrResult solveLqr(const State& x_lin, const Input& u_lin, const LqrParams& params, double thrust_gain) {
   if (!params.valid()) return failure(SolveStatus::kInvalidInput, "invalid LQR parameters");
+  if (!(thrust_gain > 0.0 && std::isfinite(thrust_gain))) return failure(SolveStatus::kInvalidInput, "thrust gain not > 0");
   if (!x_lin.allFinite()) return failure(SolveStatus::kInvalidInput, "non-finite linearization state");
   if (!u_lin.allFinite()) return failure(SolveStatus::kInvalidInput, "non-finite linearization input");
   const double q_norm = orientation(x_lin).norm();
@@ -151,7 +152,8 @@ LqrResult solveLqr(const State& x_lin, const Input& u_lin, const LqrParams& para
 
   State x = x_lin;
   orientation(x) /= q_norm;
-  return params.method == LqrMethod::kTangent ? solveTangent(x, u_lin, params) : solveIterative(x, u_lin, params);
+  return params.method == LqrMethod::kTangent ? solveTangent(x, u_lin, params, thrust_gain)
+                                              : solveIterative(x, u_lin, params, thrust_gain);
 }
 
 }  // namespace sdlqr

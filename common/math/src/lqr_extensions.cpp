@@ -107,12 +107,13 @@ AugmentedSystem<kActuatorDim> actuatorTangentSystem(const State& x_lin, const In
   return system;
 }
 
-ExtendedLqrResult solveLqrForLaw(const State& x_lin, const Input& u_lin, const LqrParams& params) {
+ExtendedLqrResult solveLqrForLaw(const State& x_lin, const Input& u_lin, const LqrParams& params,
+                                 double thrust_gain) {
   const bool integral = params.law == ControlLaw::kSdlqrIntegral;
   const bool actuator = params.law == ControlLaw::kSdlqrActuator;
   if (!integral && !actuator) {
     ExtendedLqrResult result;
-    result.lqr = solveLqr(x_lin, u_lin, params);
+    result.lqr = solveLqr(x_lin, u_lin, params, thrust_gain);
     return result;
   }
   // The preconditions of solveLqr.

@@ -23,7 +23,7 @@ bool parseLqrMethod(const std::string& text, LqrMethod& out) {
 namespace {
 
 constexpr ControlLaw kLaws[] = {ControlLaw::kSdlqr, ControlLaw::kHoverLqr, ControlLaw::kGeometric,
-                                ControlLaw::kSdlqrIntegral, ControlLaw::kSdlqrActuator};
+                                ControlLaw::kSdlqrIntegral, ControlLaw::kSdlqrActuator, ControlLaw::kSdlqrAdaptive};
 
 }  // namespace
 
@@ -34,6 +34,7 @@ const char* toString(ControlLaw law) {
     case ControlLaw::kGeometric: return "geometric";
     case ControlLaw::kSdlqrIntegral: return "sdlqr_integral";
     case ControlLaw::kSdlqrActuator: return "sdlqr_actuator";
+    case ControlLaw::kSdlqrAdaptive: return "sdlqr_adaptive";
   }
   return "unknown";
 }
@@ -95,7 +96,8 @@ const ParamTable<LqrParams>& LqrParams::declaration() {
     for (ControlLaw law : kLaws) laws.emplace_back(toString(law), law);
     t.choice("law", &P::law, ControlLaw::kSdlqr, laws,
              "controller: sdlqr (paper), hover_lqr (K solved once at hover), geometric (cascaded SE(3)), "
-             "sdlqr_integral (ext. I), sdlqr_actuator (ext. II); PARAMS law switches it in flight")
+             "sdlqr_integral (ext. I), sdlqr_actuator (ext. II), sdlqr_adaptive (thrust gain estimated online); PARAMS law "
+             "switches it in flight")
         .inFlight(ParamsUpdate::kLaw);
     // > 0: an integrator the cost does not see has no stabilizing Riccati solution.
     t.list("q_integral", &P::q_integral, {4, 4, 4}, "-", Range::above(0.0),

@@ -21,7 +21,7 @@ Mat4 unitProjectionJacobian(const Quat& q) {
   return (Mat4::Identity() - q * q.transpose() / norm_sq) / norm;
 }
 
-Linearization linearize(const State& x, const Input& u) {
+Linearization linearize(const State& x, const Input& u, double thrust_gain) {
   const Quat q = orientation(x);
   const Quat q_unit = q.normalized();
   const Mat4 projection = unitProjectionJacobian(q);
@@ -49,7 +49,7 @@ Linearization linearize(const State& x, const Input& u) {
   lin.B.block<4, 3>(kQuat, kRate) = 0.5 * quat::leftMatrix(q_unit).rightCols<3>();
 
   // eq. (23), corrected: the first two rows carry a factor 2.
-  lin.B.block<3, 1>(kVel, kThrust) = quat::bodyZ(q_unit);
+  lin.B.block<3, 1>(kVel, kThrust) = thrust_gain * quat::bodyZ(q_unit);
   return lin;
 }
 

@@ -7,6 +7,8 @@
 #include <chrono>
 #include <thread>
 
+#include <unistd.h>
+
 #include "allocation_counter.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
@@ -149,6 +151,36 @@ TEST(Node, ABadLayoutNameIsAnOptionError) {
   options.lcm_url = "udpm://239.255.76.67:7667?ttl=0";
   options.bus_layout = "both";
   EXPECT_THROW(Node("test", options), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sdlqr::bus
+
+namespace sdlqr::bus {
+namespace {
+
+// A MAVLink link beside the bus (px4/link_binding.hpp): the node's own loop waits on its descriptor
+// and hands it over when readable, nothing otherwise.
+TEST(Node, AWatchedDescriptorIsHandledInTheSameLoop) {
+  Node node("test", test::memq());
+  int fds[2];
+  ASSERT_EQ(pipe(fds), 0);
+  int calls = 0;
+  node.watchDescriptor(fds[0], [&] {
+    char byte;
+    ASSERT_EQ(read(fds[0], &byte, 1), 1);
+    ++calls;
+  });
+  node.spin(0);
+  EXPECT_EQ(calls, 0);
+  ASSERT_EQ(write(fds[1], "x", 1), 1);
+  EXPECT_TRUE(node.waitReadable(std::chrono::milliseconds(100)));
+  node.spin(0);
+  EXPECT_EQ(calls, 1);
+  for (int i = 0; i < 3; ++i) node.watchDescriptor(fds[0], [] {});
+  EXPECT_THROW(node.watchDescriptor(fds[0], [] {}), std::invalid_argument);  // four at most
+  close(fds[0]);
+  close(fds[1]);
 }
 
 }  // namespace

@@ -271,14 +271,14 @@ TEST(LawSwitch, AnUnknownLawIsRefusedAndChangesNothing) {
 
 TEST(LawNames, RoundTripAndRefuseOthers) {
   for (ControlLaw law : {ControlLaw::kSdlqr, ControlLaw::kHoverLqr, ControlLaw::kGeometric, ControlLaw::kSdlqrIntegral,
-                         ControlLaw::kSdlqrActuator}) {
+                         ControlLaw::kSdlqrActuator, ControlLaw::kSdlqrAdaptive}) {
     ControlLaw parsed = ControlLaw::kSdlqr;
     EXPECT_TRUE(parseControlLaw(toString(law), parsed));
     EXPECT_EQ(parsed, law);
   }
   ControlLaw parsed = ControlLaw::kSdlqr;
   EXPECT_FALSE(parseControlLaw("pid", parsed));
-  EXPECT_EQ(controlLawNames(), "sdlqr, hover_lqr, geometric, sdlqr_integral, sdlqr_actuator");
+  EXPECT_EQ(controlLawNames(), "sdlqr, hover_lqr, geometric, sdlqr_integral, sdlqr_actuator, sdlqr_adaptive");
 }
 
 }  // namespace

@@ -111,8 +111,15 @@ Trajectory line(double length, int samples) {
   return traj;
 }
 
+// Without transitions (the old steps): tracked from the first tick, left at once by a GOTO.
+ControllerParams withoutTransitions() {
+  ControllerParams params;
+  params.transition.enabled = false;
+  return params;
+}
+
 TEST(ReferenceGenerator, TrajectoryOnlyWhileFlyingAndTrackedSpatially) {
-  ReferenceGenerator gen(ControllerParams{}, kDefaultGravity);
+  ReferenceGenerator gen(withoutTransitions(), kDefaultGravity);
   Reference ref;
   EXPECT_FALSE(gen.setTrajectory(line(2.0, 21), 0).empty()) << "refused on the ground";
   gen.handleCommand(command(CommandType::kTakeoff, Vec3(0, 0, 1.0)));
@@ -135,7 +142,7 @@ TEST(ReferenceGenerator, TrajectoryOnlyWhileFlyingAndTrackedSpatially) {
 }
 
 TEST(ReferenceGenerator, TrackingModeSwitchKeepsThePlace) {
-  ReferenceGenerator gen(ControllerParams{}, kDefaultGravity);
+  ReferenceGenerator gen(withoutTransitions(), kDefaultGravity);
   Reference ref;
   gen.handleCommand(command(CommandType::kTakeoff, Vec3(0, 0, 1.0)));
   gen.update(referenceEstimate(0.0, Vec3::Zero()), ref);
@@ -147,6 +154,135 @@ TEST(ReferenceGenerator, TrackingModeSwitchKeepsThePlace) {
   EXPECT_EQ(ref.mode, ReferenceMode::kTemporal);
   EXPECT_NEAR(ref.x[0], before, 1e-9);
   EXPECT_FALSE(gen.setTrackingMode(ReferenceMode::kSetpoint, 500000));
+}
+
+// A generator hovering at `at` (take-off, then a GOTO there), at t = 0.01 s.
+ReferenceGenerator hoveringAt(const Vec3& at, const ControllerParams& params = ControllerParams{}) {
+  ReferenceGenerator gen(params, kDefaultGravity);
+  Reference ref;
+  gen.handleCommand(command(CommandType::kTakeoff, Vec3(0, 0, at.z())));
+  gen.update(referenceEstimate(0.0, at), ref);
+  gen.handleCommand(command(CommandType::kGoto, at));
+  gen.update(referenceEstimate(0.01, at), ref);
+  return gen;
+}
+
+// GIVEN a hover 0.5 m behind the start of a path that starts at 1 m/s WHEN it is uploaded THEN the
+// reference first flies the entry (mode TRANSITION, the path's seq, by the clock, from the vehicle
+// at rest) and hands over to the path's first sample at its end, after which it is tracked.
+TEST(ReferenceGenerator, AnEntryJoinsAPathThatStartsAtSpeed) {
+  ReferenceGenerator gen = hoveringAt(Vec3(-0.5, 0, 1));
+  Trajectory traj = line(2.0, 21);
+  traj.seq = 7;
+  ASSERT_EQ(gen.setTrajectory(traj, 10000), "");
+  Reference ref;
+  ASSERT_TRUE(gen.update(referenceEstimate(0.02, Vec3(-0.5, 0, 1)), ref));
+  EXPECT_EQ(ref.mode, ReferenceMode::kTransition);
+  EXPECT_EQ(ref.trajectory_seq, 7);
+  EXPECT_NEAR(velocity(ref.x).norm(), 0.0, 1e-9) << "starts from the vehicle at rest";
+  EXPECT_EQ(gen.transitions(), 1);
+  const double duration = gen.transition().plan().transition.duration();
+  EXPECT_GT(duration, 0.25);
+  EXPECT_LE(gen.transition().plan().report.max_body_rate, LqrParams().omega_max);
+  // The vehicle follows the reference exactly through the entry.
+  double t = 0.02;
+  while (ref.mode == ReferenceMode::kTransition) {
+    t += 0.01;
+    ASSERT_TRUE(gen.update(referenceEstimate(t, position(ref.x), velocity(ref.x)), ref));
+  }
+  EXPECT_NEAR(t - 0.02, duration, 0.011);
+  EXPECT_EQ(ref.mode, ReferenceMode::kSpatial);
+  EXPECT_EQ(ref.trajectory_seq, 7);
+  EXPECT_LT((position(ref.x) - Vec3(0, 0, 1)).norm(), 0.05) << "tracked from the path's start";
+}
+
+// A vehicle at the start of a path that starts at rest needs no entry: tracked at once.
+TEST(ReferenceGenerator, NoEntryWhereThePathStartsAtTheHover) {
+  ReferenceGenerator gen = hoveringAt(Vec3(0, 0, 1));
+  Trajectory traj = line(2.0, 21);
+  for (TrajectorySample& s : traj.samples) velocity(s.x).setZero();
+  ASSERT_EQ(gen.setTrajectory(traj, 10000), "");
+  Reference ref;
+  ASSERT_TRUE(gen.update(referenceEstimate(0.02, Vec3(0.01, 0, 1)), ref));
+  EXPECT_EQ(ref.mode, ReferenceMode::kSpatial);
+  EXPECT_EQ(gen.transitions(), 0);
+}
+
+// GIVEN a path tracked at 1 m/s WHEN a GOTO arrives THEN the reference brakes through an exit to
+// rest at the GOTO's position (mode TRANSITION, seq -1) and holds there: no velocity step.
+TEST(ReferenceGenerator, AGotoWhileTrackingExitsToRestAtTheGoto) {
+  ReferenceGenerator gen = hoveringAt(Vec3(0, 0, 1));
+  ASSERT_EQ(gen.setTrajectory(line(2.0, 21), 10000), "");
+  Reference ref;
+  double t = 0.01;
+  while (ref.mode != ReferenceMode::kSpatial) {
+    t += 0.01;
+    ASSERT_TRUE(gen.update(referenceEstimate(t, position(ref.x), velocity(ref.x)), ref));
+  }
+  const Vec3 before = velocity(ref.x);
+  gen.handleCommand(command(CommandType::kGoto, Vec3(0, 1, 1), 0.3));
+  ASSERT_TRUE(gen.update(referenceEstimate(t += 0.01, position(ref.x), velocity(ref.x)), ref));
+  EXPECT_EQ(gen.phase(), FlightPhase::kExit);
+  EXPECT_EQ(ref.mode, ReferenceMode::kTransition);
+  EXPECT_EQ(ref.trajectory_seq, -1);
+  EXPECT_LT((velocity(ref.x) - before).norm(), 0.1) << "no velocity step";
+  while (gen.phase() == FlightPhase::kExit) {
+    ASSERT_TRUE(gen.update(referenceEstimate(t += 0.01, position(ref.x), velocity(ref.x)), ref));
+  }
+  ASSERT_TRUE(gen.update(referenceEstimate(t += 0.01, position(ref.x), velocity(ref.x)), ref));
+  EXPECT_EQ(gen.phase(), FlightPhase::kHold);
+  EXPECT_LT((position(ref.x) - Vec3(0, 1, 1)).norm(), 1e-9);
+  EXPECT_NEAR(quat::yaw(orientation(ref.x)), 0.3, 1e-9);
+}
+
+// LAND while tracking: a stop first, then the landing ramp from where the vehicle stopped.
+TEST(ReferenceGenerator, ALandWhileTrackingStopsThenLands) {
+  ReferenceGenerator gen = hoveringAt(Vec3(0, 0, 1));
+  ASSERT_EQ(gen.setTrajectory(line(2.0, 21), 10000), "");
+  Reference ref;
+  double t = 0.01;
+  for (int i = 0; i < 150; ++i) ASSERT_TRUE(gen.update(referenceEstimate(t += 0.01, position(ref.x), velocity(ref.x)), ref));
+  gen.handleCommand(command(CommandType::kLand));
+  ASSERT_TRUE(gen.update(referenceEstimate(t += 0.01, position(ref.x), velocity(ref.x)), ref));
+  EXPECT_EQ(gen.phase(), FlightPhase::kExit);
+  while (gen.phase() == FlightPhase::kExit) {
+    ASSERT_TRUE(gen.update(referenceEstimate(t += 0.01, position(ref.x), velocity(ref.x)), ref));
+  }
+  EXPECT_EQ(gen.phase(), FlightPhase::kLanding);
+  EXPECT_LT(velocity(ref.x).norm(), 1e-9) << "at rest where the stop ended";
+}
+
+// Negative: a path whose samples ask beyond the limits (thrust 30 > c_max 18) is refused with the
+// report, and nothing is tracked.
+TEST(ReferenceGenerator, APathBeyondTheLimitsIsRefusedWithTheReport) {
+  ReferenceGenerator gen = hoveringAt(Vec3(0, 0, 1));
+  Trajectory traj = line(2.0, 21);
+  traj.samples[5].u[kThrust] = 30.0;
+  const std::string why = gen.setTrajectory(traj, 10000);
+  EXPECT_NE(why.find("max thrust 30 > 18"), std::string::npos) << why;
+  EXPECT_EQ(gen.phase(), FlightPhase::kHold);
+}
+
+// GIVEN the vehicle tilted 80 degrees while tracking WHEN the guard sees it THEN the trajectory is
+// aborted into a recovery: the reference is the vehicle itself, level and at rest, until it is
+// level and slow; then it holds there.
+TEST(ReferenceGenerator, AGuardTripRecoversThenHoldsWhereTheVehicleStopped) {
+  ReferenceGenerator gen = hoveringAt(Vec3(0, 0, 1), withoutTransitions());
+  ASSERT_EQ(gen.setTrajectory(line(2.0, 21), 10000), "");
+  Reference ref;
+  ASSERT_TRUE(gen.update(referenceEstimate(0.02, Vec3(0, 0, 1)), ref));
+  StateEstimate tilted = referenceEstimate(0.03, Vec3(0.2, 0.1, 1), Vec3(2, 0, 0));
+  tilted.orientation = Quat(std::cos(0.5 * 1.4), std::sin(0.5 * 1.4), 0, 0);  // 80 degrees of roll
+  ASSERT_TRUE(gen.update(tilted, ref));
+  EXPECT_EQ(gen.guardAborts(), 1);
+  EXPECT_EQ(gen.lastGuardTrip(), trajectory::GuardTrip::kTilt);
+  EXPECT_TRUE(gen.recovering());
+  EXPECT_EQ(ref.mode, ReferenceMode::kSetpoint);
+  EXPECT_EQ(position(ref.x), Vec3(0.2, 0.1, 1)) << "the reference is the vehicle itself";
+  EXPECT_EQ(velocity(ref.x), Vec3::Zero());
+  ASSERT_TRUE(gen.update(referenceEstimate(0.5, Vec3(0.6, 0.1, 1.1), Vec3(0.1, 0, 0)), ref));
+  EXPECT_FALSE(gen.recovering());
+  EXPECT_EQ(position(ref.x), Vec3(0.6, 0.1, 1.1)) << "held where it stopped";
 }
 
 }  // namespace

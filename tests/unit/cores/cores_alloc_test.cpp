@@ -30,17 +30,19 @@ struct Config {
   VehicleParams vehicle = VehicleParams::load(root.child("vehicle"));
   LqrParams lqr = LqrParams::load(root.child("lqr"));
   FaultParams faults = FaultParams::load(root.child("faults"));
+  controller::ControllerParams controller = controller::ControllerParams::load(root.child("controller"));
 };
 
 // The cores wired by their ports as in the in-process loop, without recording.
 class Stack {
  public:
   Stack(const Config& c, const mission::Scenario& scenario)
-      : mission_(scenario, trajectory::TrajectoryParams::load(c.root.child("trajectory")), c.lqr, {}),
+      : mission_(scenario, trajectory::TrajectoryParams::load(c.root.child("trajectory")),
+                 {c.lqr, c.controller.guard, c.controller.transition}, {}),
         sim_(c.vehicle, sim::SimParams::load(c.root.child("sim"))),
         estimator_(estimator::EstimatorParams::load(c.root.child("estimator"))),
         gains_(c.lqr, gains::GainsParams::load(c.root.child("gains")), c.faults),
-        controller_(c.lqr, controller::ControllerParams::load(c.root.child("controller")), c.faults),
+        controller_(c.lqr, c.controller, c.faults),
         lowlevel_(c.vehicle, lowlevel::LowlevelParams::load(c.root.child("lowlevel")), c.lqr.gravity, c.faults) {}
 
   void step() {

@@ -1,7 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/Cholesky>
+
+#include <cstring>
 #include <iostream>
 
+#include "sdlqr/math/kernel_isa.hpp"
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/estimator/error_state_ekf.hpp"
 
@@ -50,7 +54,7 @@ TEST(ErrorStateEkf, TransitionMatrixMatchesFiniteDifferencesOfThePropagation) {
   const NavState x = agileState();
   const ImuDelta delta = agileDelta();
   const Vec3 gravity(0.0, 0.0, -9.81);
-  const ErrorCovariance f = errorTransition(x, delta);
+  const ErrorCovariance f = errorTransition(x, delta).dense();
   NavState nominal = x;
   propagateNominal(nominal, delta, gravity);
 
@@ -71,23 +75,68 @@ TEST(ErrorStateEkf, TransitionMatrixMatchesFiniteDifferencesOfThePropagation) {
   EXPECT_LT(worst, 1e-7);
 }
 
-TEST(ErrorStateEkf, TheBlockwiseCovarianceTransformIsTheDenseProductForTheTransitionsShape) {
+TEST(ErrorStateEkf, TheBlockwiseCovarianceTransformIsTheDenseProduct) {
   // GIVEN the transition of an agile window and a full covariance
-  const ErrorCovariance f = errorTransition(agileState(), agileDelta());
+  const ErrorTransition f = errorTransition(agileState(), agileDelta());
   std::srand(7);
   const ErrorCovariance a = ErrorCovariance::Random();
   const ErrorCovariance p = a * a.transpose() + ErrorCovariance::Identity();
 
   // THEN the block-wise F P F^T is the dense one to rounding
-  const ErrorCovariance dense = f * p * f.transpose();
+  const ErrorCovariance dense = f.dense() * p * f.dense().transpose();
   EXPECT_LT((transformedCovariance(f, p) - dense).norm(), 1e-13 * dense.norm());
+}
 
-  // AND a transition with a block outside that shape is not: the shape is a precondition the
-  // first check holds errorTransition() to.
-  ErrorCovariance other = f;
-  other.block<3, 3>(kErrGyroBias, kErrRot) = Mat3::Identity();
-  const ErrorCovariance other_dense = other * p * other.transpose();
-  EXPECT_GT((transformedCovariance(other, p) - other_dense).norm(), 1e-3 * other_dense.norm());
+// F P F^T as Eigen expressions evaluated it before issue 26 (lazy 3x3-by-3x15 products added one
+// after the other): the sums transformedCovariance() must reproduce to the last bit, or every
+// flight would change.
+ErrorCovariance eigenExpressionTransform(const ErrorTransition& f, const ErrorCovariance& p) {
+  ErrorCovariance fp;
+  fp.middleRows<3>(kErrPos) = p.middleRows<3>(kErrPos) + f.pos_vel * p.middleRows<3>(kErrVel) +
+                              f.pos_rot * p.middleRows<3>(kErrRot) + f.pos_accel_bias * p.middleRows<3>(kErrAccelBias);
+  fp.middleRows<3>(kErrVel) = p.middleRows<3>(kErrVel) + f.vel_rot * p.middleRows<3>(kErrRot) +
+                              f.vel_accel_bias * p.middleRows<3>(kErrAccelBias);
+  fp.middleRows<3>(kErrRot) = f.rot_rot * p.middleRows<3>(kErrRot) + f.rot_gyro_bias * p.middleRows<3>(kErrGyroBias);
+  fp.middleRows<6>(kErrGyroBias) = p.middleRows<6>(kErrGyroBias);
+  ErrorCovariance out;
+  out.middleCols<3>(kErrPos) = fp.middleCols<3>(kErrPos) + fp.middleCols<3>(kErrVel) * f.pos_vel.transpose() +
+                               fp.middleCols<3>(kErrRot) * f.pos_rot.transpose() +
+                               fp.middleCols<3>(kErrAccelBias) * f.pos_accel_bias.transpose();
+  out.middleCols<3>(kErrVel) = fp.middleCols<3>(kErrVel) + fp.middleCols<3>(kErrRot) * f.vel_rot.transpose() +
+                               fp.middleCols<3>(kErrAccelBias) * f.vel_accel_bias.transpose();
+  out.middleCols<3>(kErrRot) =
+      fp.middleCols<3>(kErrRot) * f.rot_rot.transpose() + fp.middleCols<3>(kErrGyroBias) * f.rot_gyro_bias.transpose();
+  out.middleCols<6>(kErrGyroBias) = fp.middleCols<6>(kErrGyroBias);
+  return out;
+}
+
+TEST(ErrorStateEkf, TheCovarianceTransformAddsAsTheEigenExpressionItReplaced) {
+  // GIVEN many random states, IMU windows and covariances, on SSE2 and on the CPU's widest vectors
+  std::srand(11);
+  int differing = 0;
+  for (int n = 0; n < 2000; ++n) {
+    setKernelIsa(n % 2 == 0 ? KernelIsa::kBaseline : bestKernelIsa());
+    NavState x = agileState();
+    x.orientation = quat::exp(Vec3::Random() * 3.0);
+    x.velocity = 5.0 * Vec3::Random();
+    ImuDelta delta = agileDelta();
+    delta.delta_angle = Vec3::Random() * 0.02;
+    delta.delta_velocity = Vec3::Random() * 0.1;
+    const ErrorCovariance a = ErrorCovariance::Random();
+    const ErrorCovariance p = 1e-3 * a * a.transpose() + 1e-4 * ErrorCovariance::Identity();
+    const ErrorTransition f = errorTransition(x, delta);
+    // THEN the hand-vectorised transform equals the Eigen expressions bit for bit
+    const ErrorCovariance fast = transformedCovariance(f, p), reference = eigenExpressionTransform(f, p);
+    differing += std::memcmp(fast.data(), reference.data(), sizeof(double) * kErrorDim * kErrorDim) != 0;
+  }
+  setKernelIsa(bestKernelIsa());
+  EXPECT_EQ(differing, 0) << "of 2000 covariances (" << toString(bestKernelIsa()) << " and baseline)";
+  // AND the comparison can tell: the same sums added in another order differ in most cases
+  const ErrorTransition f = errorTransition(agileState(), agileDelta());
+  const ErrorCovariance a = ErrorCovariance::Random();
+  const ErrorCovariance p = a * a.transpose();
+  const ErrorCovariance reordered = (f.dense() * p) * f.dense().transpose();
+  EXPECT_NE(std::memcmp(reordered.data(), eigenExpressionTransform(f, p).data(), sizeof(double) * kErrorDim * kErrorDim), 0);
 }
 
 TEST(ErrorStateEkf, PropagationGrowsUncertaintyByTheNoiseModel) {
@@ -134,6 +183,75 @@ TEST(ErrorStateEkf, PoseUpdateIsTheKalmanBlend) {
   EXPECT_NEAR(p(kErrPos, kErrPos), 4e-4 * 1e-4 / 5e-4, 1e-12);
   EXPECT_NEAR(p(kErrRot, kErrRot), 0.5e-4, 1e-12);
   EXPECT_LT((quat::log(x.orientation)).norm(), 1e-15);
+}
+
+// The Joseph-form pose update as Eigen expressions computed it before issue 26, its 15x15 results
+// on a 16-byte boundary (as GCC placed them): what updatePose() must reproduce to the last bit.
+PoseUpdateResult eigenExpressionPoseUpdate(NavState& state, ErrorCovariance& covariance, const PoseMeasurement& pose) {
+  using Selection = Eigen::Matrix<double, 6, kErrorDim>;
+  using Gain = Eigen::Matrix<double, kErrorDim, 6>;
+  PoseVector residual;
+  residual.head<3>() = pose.position - state.position;
+  residual.tail<3>() = quat::boxMinus(pose.orientation, state.orientation);
+  Selection h = Selection::Zero();
+  h.block<3, 3>(0, kErrPos) = Mat3::Identity();
+  h.block<3, 3>(3, kErrRot) = Mat3::Identity();
+  PoseMatrix noise = PoseMatrix::Zero();
+  noise.diagonal() << Vec3::Constant(pose.position_var), Vec3::Constant(pose.attitude_var);
+  PoseUpdateResult result;
+  result.innovation_cov = h * covariance * h.transpose() + noise;
+  const Eigen::LLT<PoseMatrix> llt(result.innovation_cov);
+  result.mahalanobis_sq = residual.dot(llt.solve(residual));
+  result.accepted = true;
+  const Gain gain = llt.solve(h * covariance).transpose();
+  const ErrorVector correction = gain * residual;
+  const ErrorCovariance i_kh = ErrorCovariance::Identity() - gain * h;
+  alignas(16) const ErrorCovariance kept = i_kh.lazyProduct(covariance);
+  const Gain gain_noise = gain * noise;
+  alignas(16) ErrorCovariance updated = kept.lazyProduct(i_kh.transpose()) + gain_noise.lazyProduct(gain.transpose());
+  state.position += correction.segment<3>(kErrPos);
+  state.velocity += correction.segment<3>(kErrVel);
+  const Vec3 dtheta = correction.segment<3>(kErrRot);
+  state.orientation = quat::multiply(state.orientation, quat::exp(dtheta)).normalized();
+  state.gyro_bias += correction.segment<3>(kErrGyroBias);
+  state.accel_bias += correction.segment<3>(kErrAccelBias);
+  Mat3 reset = Mat3::Identity();
+  reset -= 0.5 * (Mat3() << 0.0, -dtheta[2], dtheta[1], dtheta[2], 0.0, -dtheta[0], -dtheta[1], dtheta[0], 0.0).finished();
+  updated.middleRows<3>(kErrRot) = (reset * updated.middleRows<3>(kErrRot)).eval();
+  updated.middleCols<3>(kErrRot) = (updated.middleCols<3>(kErrRot) * reset.transpose()).eval();
+  covariance = 0.5 * (updated + updated.transpose());
+  return result;
+}
+
+TEST(ErrorStateEkf, ThePoseUpdateAddsAsTheEigenExpressionsItReplaced) {
+  // GIVEN many random states, covariances (full, and diagonal as after a restart) and poses
+  std::srand(13);
+  int differing = 0;
+  for (int n = 0; n < 1000; ++n) {
+    NavState x = agileState();
+    x.orientation = quat::exp(Vec3::Random() * 3.0);
+    const ErrorCovariance a = ErrorCovariance::Random();
+    const ErrorCovariance full = 1e-4 * a * a.transpose() + 1e-5 * ErrorCovariance::Identity();
+    ErrorCovariance p = 0.5 * (full + full.transpose());  // exactly symmetric, as the filter keeps it
+    if (n % 4 == 0) p = (1e-3 * (ErrorVector::Random().array() + 1.5)).matrix().asDiagonal();
+    PoseMeasurement pose;
+    pose.position = x.position + 0.01 * Vec3::Random();
+    pose.orientation = quat::multiply(x.orientation, quat::exp(0.01 * Vec3::Random()));
+    pose.position_var = 1e-4 * (1 + n % 3);
+    pose.attitude_var = 2e-4;
+    // WHEN both fuse it
+    NavState fast_state = x, reference_state = x;
+    ErrorCovariance fast = p, reference = p;
+    const PoseUpdateResult r = updatePose(fast_state, fast, pose, 1e9);
+    const PoseUpdateResult expected = eigenExpressionPoseUpdate(reference_state, reference, pose);
+    // THEN every number is the same
+    const bool same = r.accepted && fast == reference && r.mahalanobis_sq == expected.mahalanobis_sq &&
+                      r.innovation_cov == expected.innovation_cov && fast_state.position == reference_state.position &&
+                      fast_state.velocity == reference_state.velocity && fast_state.orientation == reference_state.orientation &&
+                      fast_state.gyro_bias == reference_state.gyro_bias && fast_state.accel_bias == reference_state.accel_bias;
+    differing += !same;
+  }
+  EXPECT_EQ(differing, 0) << "of 1000 pose updates";
 }
 
 TEST(ErrorStateEkf, AttitudeResidualIsLocal) {

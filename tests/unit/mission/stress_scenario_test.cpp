@@ -63,6 +63,8 @@ TEST(StressScenario, BadValuesNameTheirKey) {
   EXPECT_NE(errorOf(head + "{generator: minsnap_fast, speed: 2}}").find("events[0].trajectory.speed"),
             std::string::npos);
   EXPECT_EQ(errorOf(head + "{generator: lemniscate, speed: 2, size: 1.5, on_infeasible: scale}}"), "no error");
+  EXPECT_EQ(errorOf(head + "{generator: ellipse, on_infeasible: fly}}"), "no error") << "every generator";
+  EXPECT_NE(errorOf("sim: {payload_drop: {mass_scale: 0.1}}").find("sim.payload_drop.mass_scale"), std::string::npos);
 }
 
 }  // namespace

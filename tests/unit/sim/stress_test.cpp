@@ -32,6 +32,21 @@ TEST(PlantOverride, HeavierPlantSinksAtTheMissingThrust) {
   EXPECT_NEAR(sim.acceleration().z(), expected, 1e-3);
 }
 
+// GIVEN hover thrust WHEN 15 % of the mass is dropped at 0.5 s THEN the vehicle hovers until then
+// and climbs at g (1 / 0.85 - 1) from the first step after, as Newton says.
+TEST(PayloadDrop, TheLighterPlantClimbsFromTheDropOn) {
+  const VehicleParams v;
+  Simulator sim(v, idealParams(), 1, stressFrom("{payload_drop: {at: 0.5, mass_scale: 0.85}}"));
+  sim.setBodyState(test::airborne(Vec3(0, 0, 5)), hoverThrust(v));
+  sim.setMotorCommand(armed(hoverThrust(v)));
+  while (sim.utime() < 500000) {
+    sim.step();
+    EXPECT_NEAR(sim.acceleration().z(), 0.0, 1e-9) << "before the drop";
+  }
+  sim.step();
+  EXPECT_NEAR(sim.acceleration().z(), kDefaultGravity * (1.0 / 0.85 - 1.0), 1e-3);
+}
+
 TEST(PlantOverride, ThrustCoefficientScalesTheProducedThrust) {
   const VehicleParams v;
   Simulator sim(v, idealParams(), 1, stressFrom("{plant: {thrust_scale: 0.8}}"));

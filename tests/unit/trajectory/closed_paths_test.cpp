@@ -77,14 +77,25 @@ TEST(SpeedFit, FeasibleSpeedIsKeptAndAnInfeasibleOneIsCutToTheLimit) {
   EXPECT_NEAR(over_v.feasible_speed, 1.5, 0.01);
 }
 
-TEST(Guard, TripsOnGeofenceSpeedAndPathErrorAndNotOnAGoodTick) {
+State at(const Vec3& p, const Vec3& v, const Quat& q = identityQuat()) { return makeState(p, q, v); }
+
+// Each bound trips on its own, in the documented order, and a good tick trips nothing.
+TEST(Guard, TripsOnGeofenceSpeedTiltAttitudeAndPathErrorAndNotOnAGoodTick) {
   const TrajectoryGuardParams g;
-  const Vec3 ref(1, 0, 1.5);
-  EXPECT_EQ(checkGuard(g, Vec3(1.1, 0, 1.5), Vec3(2, 0, 0), ref), GuardTrip::kNone);
-  EXPECT_EQ(checkGuard(g, Vec3(2.5, 0, 1.5), Vec3(2, 0, 0), ref), GuardTrip::kPathError);
-  EXPECT_EQ(checkGuard(g, Vec3(1.1, 0, 1.5), Vec3(7, 0, 0), ref), GuardTrip::kSpeed);
-  EXPECT_EQ(checkGuard(g, Vec3(11, 0, 1.5), Vec3(0, 0, 0), Vec3(11, 0, 1.5)), GuardTrip::kGeofence);
-  EXPECT_EQ(checkGuard(g, Vec3(0, 0, -1.5), Vec3(0, 0, 0), Vec3(0, 0, -1.5)), GuardTrip::kGeofence);
+  const State ref = at(Vec3(1, 0, 1.5), Vec3(2, 0, 0));
+  EXPECT_EQ(checkGuard(g, at(Vec3(1.1, 0, 1.5), Vec3(2, 0, 0)), ref), GuardTrip::kNone);
+  EXPECT_EQ(checkGuard(g, at(Vec3(2.5, 0, 1.5), Vec3(2, 0, 0)), ref), GuardTrip::kPathError);
+  EXPECT_EQ(checkGuard(g, at(Vec3(1.1, 0, 1.5), Vec3(7, 0, 0)), ref), GuardTrip::kSpeed);
+  EXPECT_EQ(checkGuard(g, at(Vec3(11, 0, 1.5), Vec3::Zero()), at(Vec3(11, 0, 1.5), Vec3::Zero())), GuardTrip::kGeofence);
+  EXPECT_EQ(checkGuard(g, at(Vec3(0, 0, -1.5), Vec3::Zero()), at(Vec3(0, 0, -1.5), Vec3::Zero())), GuardTrip::kGeofence);
+  // Rolled 75 degrees where the reference is rolled 60: within the attitude bound, beyond the tilt.
+  const auto roll = [](double deg) { return Quat(std::cos(deg * M_PI / 360.0), std::sin(deg * M_PI / 360.0), 0, 0); };
+  EXPECT_EQ(checkGuard(g, at(Vec3(1, 0, 1.5), Vec3(2, 0, 0), roll(75)), at(Vec3(1, 0, 1.5), Vec3(2, 0, 0), roll(60))),
+            GuardTrip::kTilt);
+  // Rolled 30 degrees one way where the reference is rolled 30 the other: 60 degrees apart.
+  EXPECT_EQ(checkGuard(g, at(Vec3(1, 0, 1.5), Vec3(2, 0, 0), roll(30)), at(Vec3(1, 0, 1.5), Vec3(2, 0, 0), roll(-30))),
+            GuardTrip::kAttitudeError);
+  EXPECT_NEAR(attitudeError(roll(30), Quat(-roll(-30))), 60.0 * M_PI / 180.0, 1e-12) << "either sign of q";
 }
 
 }  // namespace

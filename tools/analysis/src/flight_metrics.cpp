@@ -1,8 +1,11 @@
 // What a flight measured beyond its windows: the truth's extremes, estimator accuracy, rates,
 // timing, bus latency and the load of every process.
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <utility>
+#include <vector>
 
 #include "flight_parts.hpp"
 #include "sdlqr/math/quaternion.hpp"
@@ -40,18 +43,40 @@ double rateIn(const logger::Series<T>& series, double start, double end) {
   return static_cast<double>(count) / (end - start);
 }
 
-// STATE_EST publish -> RATE_CMD computed from it, both as the recorder received them [us].
-std::vector<double> stateToCommandLatency(const logger::FlightLog& log) {
-  std::map<int64_t, int64_t> state_receive;  // STATE_EST seq -> receive time at the recorder
-  for (size_t i = 0; i < log.state_estimate.size(); ++i) {
-    state_receive[log.state_estimate[i].seq] = log.state_estimate.receive_utime[i];
+// Each STATE_EST seq's receive time at the recorder (the last one when a seq repeats), looked up
+// by seq: sorted once, searched by halves (a flight holds 13,000 of them).
+class StateReceiveTimes {
+ public:
+  explicit StateReceiveTimes(const logger::FlightLog& log) {
+    times_.reserve(log.state_estimate.size());
+    for (size_t i = 0; i < log.state_estimate.size(); ++i) {
+      times_.emplace_back(log.state_estimate[i].seq, log.state_estimate.receive_utime[i]);
+    }
+    // Stable: of equal seqs the last received stays last; keep only it.
+    std::stable_sort(times_.begin(), times_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<std::pair<int64_t, int64_t>> unique;
+    unique.reserve(times_.size());
+    for (const auto& t : times_) {
+      if (!unique.empty() && unique.back().first == t.first) unique.back() = t;
+      else unique.push_back(t);
+    }
+    times_.swap(unique);
   }
+  const int64_t* find(int64_t seq) const {
+    const auto it = std::lower_bound(times_.begin(), times_.end(), seq, [](const auto& t, int64_t s) { return t.first < s; });
+    return it != times_.end() && it->first == seq ? &it->second : nullptr;
+  }
+
+ private:
+  std::vector<std::pair<int64_t, int64_t>> times_;
+};
+
+// STATE_EST publish -> RATE_CMD computed from it, both as the recorder received them [us].
+std::vector<double> stateToCommandLatency(const logger::FlightLog& log, const StateReceiveTimes& state_receive) {
   std::vector<double> latency;
   for (size_t i = 0; i < log.rate_command.size(); ++i) {
-    const auto it = state_receive.find(log.rate_command[i].state_seq);
-    if (it != state_receive.end()) {
-      latency.push_back(static_cast<double>(log.rate_command.receive_utime[i] - it->second));
-    }
+    const int64_t* received = state_receive.find(log.rate_command[i].state_seq);
+    if (received) latency.push_back(static_cast<double>(log.rate_command.receive_utime[i] - *received));
   }
   return latency;
 }
@@ -60,21 +85,18 @@ std::vector<double> stateToCommandLatency(const logger::FlightLog& log) {
 // airborne (one second trimmed at each end), |their receive interval - the receive interval of the
 // STATE_ESTs they answer| at the recorder [us]. The simulator's own pacing (which a busy machine
 // bunches) drops out; what remains is what the controller and the bus add to the period.
-std::vector<double> wallJitterUs(const logger::FlightLog& log, const FlightReport& report) {
+std::vector<double> wallJitterUs(const logger::FlightLog& log, const FlightReport& report,
+                                 const StateReceiveTimes& state_receive) {
   std::vector<double> jitter;
   if (!std::isfinite(report.flight_start)) return jitter;
-  std::map<int64_t, int64_t> state_receive;
-  for (size_t i = 0; i < log.state_estimate.size(); ++i) {
-    state_receive[log.state_estimate[i].seq] = log.state_estimate.receive_utime[i];
-  }
   const double a = report.flight_start + 1.0, b = report.flight_end - 1.0;
   for (size_t i = 1; i < log.rate_command.size(); ++i) {
     const double t = seconds(log.rate_command[i].utime);
-    const auto now = state_receive.find(log.rate_command[i].state_seq);
-    const auto before = state_receive.find(log.rate_command[i - 1].state_seq);
-    if (t < a || t > b || now == state_receive.end() || before == state_receive.end()) continue;
+    const int64_t* now = state_receive.find(log.rate_command[i].state_seq);
+    const int64_t* before = state_receive.find(log.rate_command[i - 1].state_seq);
+    if (t < a || t > b || !now || !before) continue;
     const int64_t command_interval = log.rate_command.receive_utime[i] - log.rate_command.receive_utime[i - 1];
-    jitter.push_back(std::abs(static_cast<double>(command_interval - (now->second - before->second))));
+    jitter.push_back(std::abs(static_cast<double>(command_interval - (*now - *before))));
   }
   return jitter;
 }
@@ -196,8 +218,9 @@ void measureTiming(const logger::FlightLog& log, const AnalysisOptions& options,
   report.iterations = tables::describe(iterations);
   report.rate_cmd_period_ms = tables::describe(period);
   report.rate_cmd_jitter_ms = tables::describe(jitter);
-  report.rate_cmd_wall_jitter_us = tables::describe(wallJitterUs(log, report));
-  report.state_to_command_us = tables::describe(stateToCommandLatency(log));
+  const StateReceiveTimes state_receive(log);
+  report.rate_cmd_wall_jitter_us = tables::describe(wallJitterUs(log, report, state_receive));
+  report.state_to_command_us = tables::describe(stateToCommandLatency(log, state_receive));
   report.nonfinite = countNonFinite(log.state_estimate) + countNonFinite(log.rate_command) + countNonFinite(log.gains);
 }
 

@@ -17,7 +17,8 @@ namespace {
 
 const PathTrackingReport* reportOf(const std::vector<PathTrackingReport>& reports, int64_t seq, double start) {
   for (const PathTrackingReport& r : reports) {
-    if (r.trajectory_seq == seq && std::abs(r.start - start) < 1e-6) return &r;
+    // r.start is where an entry handed over to the path (entry_time after the upload).
+    if (r.trajectory_seq == seq && std::abs(r.start - r.entry_time - start) < 1e-6) return &r;
   }
   return nullptr;
 }

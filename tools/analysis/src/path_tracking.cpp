@@ -16,6 +16,13 @@ bool tracked(const Reference& r, int64_t seq) {
   return r.trajectory_seq == seq && (r.mode == ReferenceMode::kSpatial || r.mode == ReferenceMode::kTemporal);
 }
 
+bool hadEntry(const logger::FlightLog& log, int64_t seq) {
+  for (const Reference& r : log.reference.messages) {
+    if (r.trajectory_seq == seq && r.mode == ReferenceMode::kTransition) return true;
+  }
+  return false;
+}
+
 // Reference arc position over time, laps unrolled, never decreasing (Algorithm 1 only moves
 // forward and temporal time only grows; a float wobble must not count as a lap).
 struct Progress {
@@ -120,6 +127,11 @@ std::vector<PathTrackingReport> analyzePathTracking(const logger::FlightLog& log
     r.path_length = path.length();
     r.duration = trajectory.samples.back().t - trajectory.samples.front().t;
     r.start = seconds(trajectory.start_utime > 0 ? trajectory.start_utime : trajectory.utime);
+    // A path entered through a transition is judged from where the entry handed over to it.
+    if (hadEntry(log, trajectory.seq)) {
+      r.entry_time = progress.t.front() - r.start;
+      r.start = progress.t.front();
+    }
     r.completed = progress.completed;
     r.end = progress.completed ? progress.completed_at : progress.t.back();
     if (progress.completed) r.completion_time = progress.completed_at - r.start;

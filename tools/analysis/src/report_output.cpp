@@ -100,7 +100,7 @@ JsonDocument trajectoryJson(const PathTrackingReport& t) {
       {"label", t.label}, {"trajectory_seq", t.trajectory_seq},
       {"tracking", t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial"}, {"closed", t.closed},
       {"samples", t.samples}, {"path_length_m", t.path_length}, {"duration_s", t.duration}, {"start_s", t.start},
-      {"end_s", t.end}, {"completed", t.completed}, {"completion_time_s", t.completion_time},
+      {"entry_time_s", t.entry_time}, {"end_s", t.end}, {"completed", t.completed}, {"completion_time_s", t.completion_time},
       {"remaining_m", t.remaining}, {"laps", t.laps}, {"truth_samples", t.truth_samples},
       {"path_error_rms_m", t.path_error_rms}, {"path_error_max_m", t.path_error_max},
       {"path_error_rms_axis_m", vec3(t.path_error_rms_axis)}, {"path_error_max_axis_m", vec3(t.path_error_max_axis)},
@@ -267,9 +267,9 @@ void writeTrajectories(const FlightReport& r, std::ostream& out) {
       out << "  " << t.missing << "\n";
       continue;
     }
-    std::snprintf(line, sizeof line, "  %s (%s, %s, %d samples, %.2f m per lap): %s, %.2f laps\n", t.label.c_str(),
+    std::snprintf(line, sizeof line, "  %s (%s, %s, %d samples, %.2f m per lap): %s%s, %.2f laps\n", t.label.c_str(),
                   t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial", t.closed ? "closed" : "open",
-                  t.samples, t.path_length,
+                  t.samples, t.path_length, t.entry_time > 0.0 ? format("entered in %.2f s, ", t.entry_time).c_str() : "",
                   t.completed ? format("completed in %.2f s", t.completion_time).c_str()
                               : format("not completed (%.2f m left)", t.remaining).c_str(),
                   t.laps);

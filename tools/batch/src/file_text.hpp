@@ -1,5 +1,7 @@
 #pragma once
-// Internal to tools/batch/src (spec.cpp, results.cpp): a whole file as text.
+// Internal to tools/batch/src (spec.cpp, results.cpp, slurm_submit.cpp): a whole file as text.
+
+#include <sys/stat.h>
 
 #include <fstream>
 #include <sstream>
@@ -13,6 +15,11 @@ inline std::string fileText(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+inline bool exists(const std::string& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0;
 }
 
 }  // namespace sdlqr::batch::detail

@@ -91,15 +91,16 @@ closedloop::StackConfig stackFlying(const BatchContext& context, const std::stri
 }
 
 FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std::string& controller,
-                bool record_motor_commands) {
+                bool record_motor_commands, logger::FlightLog storage) {
   const closedloop::StackConfig config = stackFlying(context, controller);
   // MOTOR_CMD (1 kHz) is kept only when asked or for the criterion that judges it: rotors at the
   // mixer's limits.
   closedloop::RecordOptions record;
   record.motor_command = record_motor_commands || world.scenario.criteria.count("rotor_at_limit_max") > 0;
   closedloop::ClosedLoop loop(config, world.plant, world.scenario, record);
+  loop.recordInto(std::move(storage));
   loop.run();
-  FlownFlight flown{world, loop.log(), {}};
+  FlownFlight flown{world, loop.takeLog(), {}};
   // The limits the stack flies with (the controller's thrust, the mixer's rotors), not the plant's.
   analysis::AnalysisOptions options;
   analysis::setVehicleLimits(options, config.lqr, config.vehicle);

@@ -50,11 +50,6 @@ std::vector<std::vector<std::string>> records(const std::string& text, const std
   return out;
 }
 
-bool exists(const std::string& path) {
-  struct stat st {};
-  return ::stat(path.c_str(), &st) == 0;
-}
-
 // "key: value" lines of batch.yaml.
 std::map<std::string, std::string> batchInfo(const std::string& dir) {
   const YAML::Node node = loadYamlFile(dir + "/batch.yaml");
@@ -120,7 +115,7 @@ void writeTable(const Table& table, const std::string& path) {
 }
 
 Table readTable(const std::string& path) {
-  if (!exists(path)) throw std::runtime_error(path + ": no such file");
+  if (!detail::exists(path)) throw std::runtime_error(path + ": no such file");
   auto rows = records(detail::fileText(path), path, false);
   if (rows.empty()) throw std::runtime_error(path + ": empty (no header)");
   Table t;
@@ -129,22 +124,25 @@ Table readTable(const std::string& path) {
   return t;
 }
 
+void checkBatchFolder(const std::string& dir, const BatchContext& context, const Shard& shard) {
+  if (!detail::exists(dir + "/batch.yaml")) return;
+  const auto info = batchInfo(dir);
+  if (info.count("fingerprint") == 0 || info.at("fingerprint") != context.spec.fingerprint) {
+    throw std::runtime_error(dir + ": holds another batch (another batch file, scenario or vehicle file): choose another --out");
+  }
+  if (info.count("shard") == 0 || info.at("shard") != shard.text()) {
+    throw std::runtime_error(dir + ": holds shard " + (info.count("shard") ? info.at("shard") : "?") +
+                             " of this batch, not " + shard.text() + ": choose another --out");
+  }
+}
+
 Journal::Journal(const std::string& dir, const BatchContext& context, const Shard& shard)
     : path_(dir + "/flights.partial.csv"), header_(header(context)) {
   makeDirectories(dir);
-  if (exists(dir + "/batch.yaml")) {
-    const auto info = batchInfo(dir);
-    if (info.count("fingerprint") == 0 || info.at("fingerprint") != context.spec.fingerprint) {
-      throw std::runtime_error(dir + ": holds another batch (another batch file, scenario or vehicle file): choose another --out");
-    }
-    if (info.count("shard") == 0 || info.at("shard") != shard.text()) {
-      throw std::runtime_error(dir + ": holds shard " + (info.count("shard") ? info.at("shard") : "?") +
-                               " of this batch, not " + shard.text() + ": choose another --out");
-    }
-  }
+  checkBatchFolder(dir, context, shard);
   writeBatchInfo(dir, context, shard);
   // Rows that landed whole; a row a kill cut short (no line end, or fewer cells) is dropped.
-  const std::string old = exists(path_) ? detail::fileText(path_) : std::string();
+  const std::string old = detail::exists(path_) ? detail::fileText(path_) : std::string();
   std::string kept = headerLine(header_);
   if (!old.empty()) {
     const size_t end = old.rfind('\n');
@@ -194,7 +192,7 @@ Table mergeShards(const std::vector<std::string>& shard_dirs, const std::string&
   std::set<int> indices;
   int count = 0;
   for (const std::string& dir : shard_dirs) {
-    if (!exists(dir + "/batch.yaml")) throw std::runtime_error(dir + ": not a batch folder (no batch.yaml)");
+    if (!detail::exists(dir + "/batch.yaml")) throw std::runtime_error(dir + ": not a batch folder (no batch.yaml)");
     const auto info = batchInfo(dir);
     if (info.count("fingerprint") == 0 || info.at("fingerprint") != context.spec.fingerprint) {
       throw std::runtime_error(dir + ": another batch (its fingerprint differs from " + context.spec.path + ")");
@@ -203,7 +201,7 @@ Table mergeShards(const std::vector<std::string>& shard_dirs, const std::string&
     if (count != 0 && shard.count != count) throw std::runtime_error(dir + ": shard " + shard.text() + " of another split");
     count = shard.count;
     if (!indices.insert(shard.index).second) throw std::runtime_error(dir + ": shard " + shard.text() + " given twice");
-    if (!exists(dir + "/flights.csv")) throw std::runtime_error(dir + ": shard " + shard.text() + " unfinished (no flights.csv; run it again to finish)");
+    if (!detail::exists(dir + "/flights.csv")) throw std::runtime_error(dir + ": shard " + shard.text() + " unfinished (no flights.csv; run it again to finish)");
     const Table t = readTable(dir + "/flights.csv");
     if (t.header != merged.header) throw std::runtime_error(dir + "/flights.csv: columns differ from this batch's");
     merged.rows.insert(merged.rows.end(), t.rows.begin(), t.rows.end());

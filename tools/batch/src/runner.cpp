@@ -6,6 +6,7 @@
 #include <mutex>
 #include <thread>
 
+#include "sdlqr/batch/heap.hpp"
 #include "sdlqr/batch/progress.hpp"
 #include "sdlqr/batch/summary.hpp"
 
@@ -21,6 +22,7 @@ struct Job {
 }  // namespace
 
 RunResult runBatch(const BatchContext& context, const RunOptions& options) {
+  keepFreedHeapMemory();
   Journal journal(options.out_dir, context, options.shard);
   std::vector<Job> jobs;
   long long shard_total = 0;
@@ -45,10 +47,11 @@ RunResult runBatch(const BatchContext& context, const RunOptions& options) {
   std::mutex mutex;  // the journal, the counters, the progress line
   std::exception_ptr error;
   auto worker = [&] {
+    logger::FlightLog spare;  // the last flight's log: the next one records into its memory
     for (size_t i = next++; i < jobs.size() && !stop; i = next++) {
       try {
         const FlightDraw draw = drawFlight(context.spec, context.config, context.scenario.sim, jobs[i].flight);
-        const FlownFlight flown = fly(context, worldOf(context, draw), jobs[i].controller);
+        FlownFlight flown = fly(context, worldOf(context, draw), jobs[i].controller, false, std::move(spare));
         const std::string line = row(context, draw, jobs[i].controller, flown.report);
         std::lock_guard<std::mutex> lock(mutex);
         journal.append(line);
@@ -58,6 +61,7 @@ RunResult runBatch(const BatchContext& context, const RunOptions& options) {
                                                               : flown.log.sim_truth.messages.back().utime);
         failed += flown.report.passed() ? 0 : 1;
         if (options.progress) progress.update(result.resumed + result.flown, failed);
+        spare = std::move(flown.log);
       } catch (...) {
         std::lock_guard<std::mutex> lock(mutex);
         if (!error) error = std::current_exception();

@@ -7,6 +7,7 @@
 #include "sdlqr/batch/results.hpp"
 #include "sdlqr/compare/compare_metrics.hpp"
 #include "sdlqr/compare/compare_report.hpp"
+#include "sdlqr/compare/headline.hpp"
 #include "sdlqr/tables/csv.hpp"
 
 namespace sdlqr::compare {
@@ -120,8 +121,34 @@ std::string pathCsv(const CompareResult& result, const std::string& experiment) 
   return text.str();
 }
 
+std::string benchmarkName(const Benchmark& benchmark) {
+  std::string name = benchmark.path.substr(benchmark.path.find_last_of('/') + 1);
+  if (name.size() > 5 && name.compare(name.size() - 5, 5, ".yaml") == 0) name.resize(name.size() - 5);
+  return name;
+}
+
+void writeHeadlineFile(const std::vector<Benchmark>& benchmarks, const std::vector<CompareResult>& results,
+                       const std::string& dir) {
+  std::vector<HeadlineRun> runs;
+  std::string reports;
+  for (size_t i = 0; i < benchmarks.size(); ++i) {
+    runs.push_back({&benchmarks[i], &results[i]});
+    reports += "- [" + benchmarkName(benchmarks[i]) + "](" + benchmarkName(benchmarks[i]) + "/report.md): " +
+               std::to_string(results[i].flown) + " flights\n";
+  }
+  batch::writeText(dir + "/report.md",
+                   "# Controller comparison: " + std::to_string(benchmarks.size()) + " benchmarks\n\n" +
+                       headlineMarkdown(runs) + "## Reports\n\n" + reports);
+}
+
 void writeCompareFiles(const Benchmark& benchmark, const CompareResult& result, const std::string& dir) {
   batch::makeDirectories(dir + "/tracks");
+  batch::makeDirectories(dir + "/summaries");
+  for (const ExperimentFlight& f : result.flights) {
+    std::ostringstream summary;
+    analysis::writeSummary(f.report, summary);
+    batch::writeText(dir + "/summaries/" + f.experiment + "-" + f.controller + ".txt", summary.str());
+  }
   batch::writeText(dir + "/flights.csv", flightsCsv(result));
   if (!result.sweeps.empty()) {
     batch::writeText(dir + "/sweep.csv", sweepCsv(result));

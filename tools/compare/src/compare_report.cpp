@@ -8,6 +8,7 @@
 #include "sdlqr/compare/compare_files.hpp"
 #include "sdlqr/compare/compare_losses.hpp"
 #include "sdlqr/compare/compare_metrics.hpp"
+#include "sdlqr/compare/headline.hpp"
 
 namespace sdlqr::compare {
 
@@ -207,6 +208,7 @@ std::string reportMarkdown(const Benchmark& benchmark, const CompareResult& resu
   out << ".\n\nLower is better in every metric column; `never`: applies but was never reached, `—`: does not "
          "apply. Exact values: `flights.csv`, `sweep.csv`; tracks: `tracks/`; plots: `plots/` "
          "(`scripts/plot_compare.py`, none with `--no-plots`).\n\n";
+  out << headlineMarkdown({{&benchmark, &result}});
   summary(out, benchmark, result);
   if (!result.sweeps.empty()) sweepSection(out, benchmark, result);
   for (const ExperimentInfo& info : result.experiments) experimentSection(out, info, flightsOf(result, info.name));

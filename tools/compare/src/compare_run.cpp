@@ -58,6 +58,7 @@ CompareResult runCompare(const Benchmark& benchmark, const CompareOptions& optio
     contexts.push_back(scenarioContext(e.scenario_path, benchmark.controllers, benchmark.seed));
     const mission::Scenario& s = contexts.back().scenario;
     result.experiments.push_back({s.name, s.description, e.scenario_path, s.seed});
+    if (result.vehicle_path.empty()) result.vehicle_path = s.vehicle_path;
   }
   const size_t controllers = benchmark.controllers.size();
   result.flights.resize(contexts.size() * controllers);
@@ -78,6 +79,7 @@ CompareResult runCompare(const Benchmark& benchmark, const CompareOptions& optio
     sweep_context = scenarioContext(benchmark.sweep.scenario_path, benchmark.controllers, benchmark.seed);
     const mission::Scenario& s = sweep_context.scenario;
     result.sweep = {s.name, s.description, benchmark.sweep.scenario_path, s.seed};
+    result.vehicle_path = s.vehicle_path;
     for (const std::string& key : benchmark.sweep.fail_on) result.sweep_limits.push_back(s.criteria.at(key));
     result.refusals = sweepRefusals(sweep_context, benchmark.sweep.speeds);
     result.sweep_seeds = sweepSeeds(benchmark, s);

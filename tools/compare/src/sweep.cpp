@@ -5,7 +5,7 @@
 #include <string>
 
 #include "sdlqr/batch/metric.hpp"
-#include "sdlqr/mission/trajectory_request.hpp"
+#include "sdlqr/mission/mission_core.hpp"
 
 namespace sdlqr::compare {
 
@@ -38,18 +38,19 @@ mission::Scenario atSpeed(const mission::Scenario& scenario, double speed) {
   mission::TrajectoryRequest& request = out.events[sweptEventIndex(scenario, "speed_sweep.scenario")].trajectory;
   request.speed = speed;
   request.v_max = -1.0;               // the check's speed limit follows the speed asked
-  request.scale_if_infeasible = false;  // a sweep flies the speed it names, or none
+  request.on_infeasible = mission::OnInfeasible::kRefuse;  // a sweep flies the speed it names, or none
   return out;
 }
 
 std::vector<std::string> sweepRefusals(const batch::BatchContext& context, const std::vector<double>& speeds) {
-  const size_t event = sweptEventIndex(context.scenario, "speed_sweep.scenario");
-  const std::string key = "events[" + std::to_string(event) + "].trajectory";
   std::vector<std::string> out;
+  const mission::PathLimits limits{context.config.lqr, context.config.controller.guard,
+                                   context.config.controller.transition};
   for (double speed : speeds) {
     const mission::Scenario scenario = atSpeed(context.scenario, speed);
     try {
-      mission::buildTrajectory(scenario.events[event].trajectory, context.config.trajectory, context.config.lqr, key);
+      // The mission's own check, from the hover the scenario flies before the path.
+      const mission::MissionCore check(scenario, context.config.trajectory, limits, mission::MissionOptions());
       out.emplace_back();
     } catch (const ConfigError& e) {
       out.emplace_back(e.what());

@@ -104,8 +104,11 @@ const Host* Deployment::hostOf(const std::string& process) const {
 Deployment loadDeployment(const std::string& path, const std::vector<std::string>& stack_processes) {
   const YAML::Node root = loadYamlFile(path);
   ConfigReader reader(root, "");
-  reader.allowOnly({"name", "description", "lcm_url", "prefix_length", "monitor", "signing", "hosts"});
+  reader.allowOnly({"name", "description", "lcm_url", "prefix_length", "monitor", "signing", "hosts", "procs",
+                    "mavlink_signing"});
   Deployment d;
+  d.procs = deploymentProcs(path);
+  reader.read("mavlink_signing", d.mavlink_signing);
   reader.read("name", d.name);
   if (d.name.empty()) throw ConfigError("name", "missing");
   reader.read("lcm_url", d.lcm_url);
@@ -131,6 +134,15 @@ Deployment loadDeployment(const std::string& path, const std::vector<std::string
   return d;
 }
 
+std::string deploymentProcs(const std::string& path) {
+  ConfigReader reader(loadYamlFile(path), "");
+  std::string procs;
+  reader.read("procs", procs);
+  if (procs.empty() || procs[0] == '/') return procs;
+  const size_t slash = path.rfind('/');
+  return slash == std::string::npos ? procs : path.substr(0, slash + 1) + procs;
+}
+
 std::vector<std::string> stackProcessNames(const std::string& procs_path) {
   std::ifstream in(procs_path);
   if (!in) throw ConfigError(procs_path, "cannot open file");
@@ -148,6 +160,8 @@ std::string describe(const Deployment& d) {
   std::ostringstream out;
   out << "name=" << d.name << "\nlcm_url=" << d.lcm_url << "\nprefix_length=" << d.prefix_length
       << "\nmonitor=" << d.monitor << "\nsigning=" << (d.signing ? "on" : "off") << "\n";
+  if (!d.procs.empty()) out << "procs=" << d.procs << "\n";
+  if (d.mavlink_signing) out << "mavlink_signing=on\n";
   for (const Host& host : d.hosts) {
     out << "host=" << host.name << " " << host.address << " " << host.receive_delay_ms;
     for (const std::string& p : host.processes) out << " " << p;

@@ -11,6 +11,7 @@ struct ControlOutput {
   bool rate_saturated = false;    // ||omega|| clipped to omega_max
   bool thrust_saturated = false;  // c clipped to [c_min, c_max]
   double thrust_demand = 0.0;     // [m/s^2] c before the clip: how far beyond the limits the law asked
+  bool headroom_scaled = false;   // applyControlLawWithinThrust scaled the feedback down
 };
 
 struct ErrorBounds {
@@ -32,5 +33,12 @@ ControlOutput applyInputLimits(const Input& u, const LqrParams& limits);
 // q_lin: the quaternion K was linearized at (GainSet::x_lin).
 ControlOutput applyControlLaw(const GainMatrix& K, const Quat& q_lin, const State& x, const State& x_ref,
                               const Input& u_ref, const LqrParams& limits, const ErrorBounds& bounds);
+
+// As applyControlLaw, but where u_ref + K (x - x_ref) would ask for thrust outside [c_min, c_max]
+// the feedback K (x - x_ref) is scaled down (rates with it) until the thrust is at the limit: the
+// paper's bounded errors (§IV-A) made as tight as the thrust leaves room for. sdlqr_integral flies
+// with it: its 12-state K is ~10 % stiffer than the paper's and leaned on c_max under a held pull.
+ControlOutput applyControlLawWithinThrust(const GainMatrix& K, const Quat& q_lin, const State& x, const State& x_ref,
+                                          const Input& u_ref, const LqrParams& limits, const ErrorBounds& bounds);
 
 }  // namespace sdlqr::controller

@@ -6,6 +6,7 @@
 #include "sdlqr/config/param_table.hpp"
 #include "sdlqr/messages/messages.hpp"
 #include "sdlqr/trajectory/guard.hpp"
+#include "sdlqr/trajectory/transition.hpp"
 
 namespace sdlqr::controller {
 
@@ -33,10 +34,15 @@ struct ControllerParams {
   double recovery_speed;
   ReferenceMode tracking;  // for trajectories that do not say
   trajectory::TrajectoryGuardParams guard;  // aborts a trajectory that flies the vehicle away
+  trajectory::TransitionParams transition;  // entry into and exit from a trajectory
   // The law itself is lqr.law (the gain solver needs it too); these belong to the controller alone.
   double switch_time_s;    // bumpless transfer between laws (bumpless_transfer.hpp)
   double integral_limit;   // [m s] anti-windup bound on the norm of the position-error integral
   double integral_zone;    // [m] the integral only integrates within this distance of the reference
+  double thrust_gain_time_constant;  // [s] sdlqr_adaptive: how slowly the thrust gain follows
+  double thrust_gain_min;            // [-] sdlqr_adaptive: bounds of the thrust gain estimate
+  double thrust_gain_max;
+  double thrust_gain_zone;           // [m] sdlqr_adaptive: adapts only this close to the reference
   Vec3 geometric_position_gain;     // [1/s^2] geometric_control.hpp kp x, y, z
   Vec3 geometric_velocity_gain;     // [1/s] kd x, y, z
   Vec3 geometric_attitude_gain;     // [1/s] k_att roll, pitch, yaw

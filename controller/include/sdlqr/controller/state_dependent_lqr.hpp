@@ -8,7 +8,9 @@
 // (bumpless_transfer.hpp): sdlqr (the above), hover_lqr (the hover K computed here, always),
 // geometric (geometric_control.hpp), sdlqr_integral and sdlqr_actuator (the extensions'
 // GAINS with their K_aug on the states kept in extension_states.hpp; until their first K arrives,
-// or when it goes past the fallback age, they run as sdlqr).
+// or when it goes past the fallback age, they run as sdlqr), sdlqr_adaptive (sdlqr whose model's
+// thrust gain is estimated online, extension_states.hpp: the feed-forward thrust divided by it,
+// and REFERENCE thrust_gain gives it to the gain solver's linearization).
 
 #include "sdlqr/messages/messages.hpp"
 #include "sdlqr/math/lqr_params.hpp"
@@ -71,6 +73,8 @@ class StateDependentLqr {
   const GainMatrix& fallbackGain() const { return fallback_K_; }
   const ReferenceGenerator& references() const { return references_; }
   const Vec3& positionErrorIntegral() const { return integral_.value(); }
+  // sdlqr_adaptive's estimate of produced over commanded thrust (kept for every law; 1 on the ground).
+  double thrustGain() const { return thrust_gain_.value(); }
 
  private:
   struct GainSlot {
@@ -87,10 +91,12 @@ class StateDependentLqr {
   const GainMatrix& chooseGain(int64_t now_utime, GainsFreshness& freshness, int64_t& gains_seq);
   GainSlot& slotFor(ControlLaw law);
   LawTick computeLaw(const StateEstimate& estimate, const Reference& reference);
-  LawTick lqrTick(const StateEstimate& estimate, const Reference& reference);
+  LawTick lqrTick(const StateEstimate& estimate, const Reference& reference, const Input& u_ref);
+  void updateThrustGain(const StateEstimate& received);
   void hoverGain(const Reference& reference, GainMatrix& K, Quat& q_lin) const;
   bool extensionFresh(const GainSlot& slot, int64_t now_utime) const;
-  void updateExtensionStates(const StateEstimate& estimate, const Reference& reference, const RateCommand& command);
+  void updateExtensionStates(const StateEstimate& estimate, const Reference& reference, const RateCommand& command,
+                             bool headroom_scaled);
 
   RuntimeLqrParams lqr_;
   ControllerParams params_;
@@ -101,6 +107,8 @@ class StateDependentLqr {
   GainSlot integral_gains_, actuator_gains_;
   PositionErrorIntegral integral_;
   ThrustLagModel thrust_model_;
+  ThrustGainEstimate thrust_gain_;
+  Vec3 last_reference_position_ = Vec3::Zero();  // of the last tick (the thrust gain adapts near it)
   BumplessTransfer transfer_;
   ControlLaw tick_law_ = ControlLaw::kSdlqr;  // law and extension of the last tick
   bool tick_extension_ = false;

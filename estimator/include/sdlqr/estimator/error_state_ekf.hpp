@@ -23,15 +23,26 @@ struct ProcessNoise {
 // accelerometer samples in `delta` add clip_velocity_var each to the velocity variance along
 // their body axis (as an impulse at mid-interval, so position and its correlation follow).
 void propagate(NavState& state, ErrorCovariance& covariance, const ImuDelta& delta, const ProcessNoise& noise);
+// The same from one state and covariance into others (the history's next entry, written in place;
+// the outputs may be the inputs).
+void propagate(const NavState& state, const ErrorCovariance& covariance, const ImuDelta& delta, const ProcessNoise& noise,
+               NavState& state_out, ErrorCovariance& covariance_out);
+
+// F = d(error after) / d(error before) of one propagation: the identity but for these 3x3 blocks
+// (row, column), so F P F^T takes 3x3-by-3x15 products instead of Eigen's 15x15 GEMM path.
+struct ErrorTransition {
+  Mat3 pos_vel, pos_rot, pos_accel_bias;  // (p,v), (p,theta), (p,ba)
+  Mat3 vel_rot, vel_accel_bias;           // (v,theta), (v,ba)
+  Mat3 rot_rot, rot_gyro_bias;            // (theta,theta), (theta,bg)
+  ErrorCovariance dense() const;
+};
 
 // The two halves of propagate(), exposed for the Jacobian test: the nominal state update, and
-// d(error after) / d(error before) evaluated at `state` (before the update).
+// F evaluated at `state` (before the update).
 void propagateNominal(NavState& state, const ImuDelta& delta, const Vec3& gravity);
-ErrorCovariance errorTransition(const NavState& state, const ImuDelta& delta);
-// F P F^T for an F of errorTransition()'s shape: the identity but for its blocks (p,v), (p,theta),
-// (p,ba), (v,theta), (v,ba), (theta,theta) and (theta,bg). Exposed for the test that holds it to
-// the dense product.
-ErrorCovariance transformedCovariance(const ErrorCovariance& f, const ErrorCovariance& p);
+ErrorTransition errorTransition(const NavState& state, const ImuDelta& delta);
+// F P F^T, exposed for the test that holds it to the dense product.
+ErrorCovariance transformedCovariance(const ErrorTransition& f, const ErrorCovariance& p);
 
 struct PoseMeasurement {
   Vec3 position = Vec3::Zero();       // [m] world

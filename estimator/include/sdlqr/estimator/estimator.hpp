@@ -102,6 +102,8 @@ class Estimator {
   EstimatorParams params_;
   ProcessNoise noise_;
   int64_t period_us_;
+  // [us] params_'s limits on the IMU clock, looked at every sample.
+  int64_t imu_max_gap_us_, reinit_after_us_, vio_timeout_us_;
   ImuDownsampler downsampler_;
   StateHistory history_;
   GatedPoseRun gated_run_;

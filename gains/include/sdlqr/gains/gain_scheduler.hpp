@@ -18,6 +18,7 @@ class GainScheduler {
   // The reference input u0 of the controller's current tick (REFERENCE); hover until the first.
   void setReference(const Reference& reference) {
     reference_input_ = reference.u;
+    reference_thrust_gain_ = reference.thrust_gain;
     reference_seq_ = reference.seq;
   }
   // Offers a PARAMS update to the LQR parameters under the rule the controller shares
@@ -42,6 +43,7 @@ class GainScheduler {
   int64_t period_utime_;
   int64_t next_utime_ = 0;
   Input reference_input_;
+  double reference_thrust_gain_ = 1.0;  // the model's thrust gain (REFERENCE thrust_gain)
   int64_t reference_seq_ = -1;
   int64_t seq_ = 0;
   int64_t solves_ = 0;

@@ -65,6 +65,7 @@ class Mixer {
   Mat44 effectiveness_;
   Mat44 allocation_;  // pseudo-inverse of effectiveness_
   Vec4 collective_column_;
+  Vec4 inverse_collective_column_;  // 1 / each rotor's share of the collective
   double min_thrust_;
   double max_thrust_;
   MixerParams params_;

@@ -9,7 +9,7 @@
 //   onWallTime(now)  the clock watchdog: no newer clock for no_clock_timeout_s -> clockLost()
 //   onStateEstimate  throw mode only (the scenario's throw_mode): a detected throw publishes ARM,
 //                    then GOTO the estimated position (hold there), counted as "throw.detected"
-// Trajectories are generated at construction, so a bad request fails before the flight.
+// Trajectories are generated and checked at construction, so a bad request fails before the flight.
 
 #include <cstdint>
 #include <optional>
@@ -23,6 +23,7 @@
 #include "sdlqr/mission/mission_player.hpp"
 #include "sdlqr/mission/scenario.hpp"
 #include "sdlqr/mission/throw_detector.hpp"
+#include "sdlqr/mission/trajectory_request.hpp"
 #include "sdlqr/trajectory/params.hpp"
 
 namespace sdlqr::mission {
@@ -34,8 +35,9 @@ struct MissionOptions {
 
 class MissionCore {
  public:
-  // Throws ConfigError naming the event's key when a trajectory cannot be built.
-  MissionCore(const Scenario& scenario, const trajectory::TrajectoryParams& trajectory, const LqrParams& lqr,
+  // Throws ConfigError naming the event's key when a trajectory cannot be built or its check
+  // (against `limits`, trajectory/path_check.hpp) refuses it.
+  MissionCore(const Scenario& scenario, const trajectory::TrajectoryParams& trajectory, const PathLimits& limits,
               const MissionOptions& options);
 
   void onClock(const SimClockTick& clock, Outbox& out);

@@ -31,12 +31,16 @@ namespace sdlqr::mission {
 
 // Unset optional fields (negative) take the vehicle file's `trajectory:` settings.
 //
-// Aggressive closed paths at a user-set speed (circle, lemniscate, or min-snap through the
-// waypoints of a YAML/CSV file) are checked for feasibility when the scenario is loaded: beyond
-// the vehicle they are refused with the report (on_infeasible: refuse), or flown at the highest
-// feasible speed (on_infeasible: scale).
+// Every trajectory (the paper's, aggressive closed paths at a user-set speed — circle, lemniscate,
+// or min-snap through the waypoints of a YAML/CSV file —, a CSV file of samples) is checked when
+// the scenario is loaded (trajectory/path_check.hpp: its inputs within the lqr limits, an entry from
+// the hover before it and an exit from it that are flyable): beyond the vehicle it is refused with
+// the report (on_infeasible: refuse), flown at the highest feasible speed (scale), or flown as it
+// is with the report printed (fly: the paper's infeasible ellipse, §III-C.3, on purpose).
 //   {generator: circle, speed: 3.0, size: 1.0, center: [0, 0, 1.5], v_max: 4.0, on_infeasible: scale}
 //   {generator: waypoints, waypoints: path.yaml, speed: 2.0}
+enum class OnInfeasible { kRefuse, kScale, kFly };
+
 struct TrajectoryRequest {
   std::string generator;   // minsnap_fast, minsnap_slow, ellipse, csv, circle, lemniscate or waypoints
   std::string csv_path;    // for generator csv, resolved against the scenario folder
@@ -44,8 +48,8 @@ struct TrajectoryRequest {
   double speed = -1.0;     // [m/s] peak speed of circle, lemniscate, waypoints (the file's v_max if unset)
   double size = 1.0;       // [m] circle radius, lemniscate half-width
   Vec3 center = Vec3(0.0, 0.0, 1.5);  // [m] of circle and lemniscate
-  double v_max = -1.0;     // [m/s] speed limit of the feasibility check (unset: the requested speed)
-  bool scale_if_infeasible = false;  // on_infeasible: scale (else refuse)
+  double v_max = -1.0;     // [m/s] speed limit of the check (unset: the requested speed, or the guard's)
+  OnInfeasible on_infeasible = OnInfeasible::kRefuse;
   int laps = -1;           // [-] laps of the paper's paths
   ReferenceMode tracking = ReferenceMode::kSpatial;
   double height_offset = -1.0;  // [m] added to the paper's waypoint heights

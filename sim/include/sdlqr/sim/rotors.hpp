@@ -17,7 +17,9 @@ Vec4 saturatedSetpoint(const MotorCommand& command, const VehicleParams& vehicle
 // T(tau) = T_sp + (T_0 - T_sp) exp(-tau / time_constant).
 class MotorLag {
  public:
-  explicit MotorLag(double time_constant) : time_constant_(time_constant) {}
+  // `step` [s]: the physics step, whose instants the integrator asks for at every step (step / 2,
+  // step): their decay factors are computed once.
+  MotorLag(double time_constant, double step);
 
   void setSetpoint(const Vec4& setpoint) { setpoint_ = setpoint; }
   const Vec4& setpoint() const { return setpoint_; }
@@ -30,7 +32,12 @@ class MotorLag {
   void setThrust(const Vec4& thrust) { thrust_ = thrust; }
 
  private:
+  // exp(-tau / time_constant), 0 without a lag.
+  double remaining(double tau) const;
+
   double time_constant_;
+  double half_step_, step_;
+  double remaining_half_step_, remaining_step_;
   Vec4 setpoint_ = Vec4::Zero();
   Vec4 thrust_ = Vec4::Zero();
 };
@@ -40,10 +47,19 @@ class RotorWrench {
  public:
   RotorWrench(const VehicleParams& vehicle, double gravity);
 
+  // What per-rotor thrusts [N] give whatever the body's state: collective thrust and torques, and
+  // the mean rotor speed over hover rotor speed. The integrator's two mid-step stages share it.
+  struct Load {
+    Vec4 thrust_and_torques;
+    double rotor_speed_ratio;
+  };
+  Load load(const Vec4& thrust) const;
+
   // Wrench of the given per-rotor thrusts [N] on a body in state s. Rotor drag is induced by the
   // spinning rotors: it grows with rotor speed (~ sqrt(thrust)) and equals the configured
   // mass-normalized coefficients at hover thrust, vanishing when the rotors stop.
-  Wrench operator()(const Vec4& thrust, const BodyState& s) const;
+  Wrench operator()(const Vec4& thrust, const BodyState& s) const { return (*this)(load(thrust), s); }
+  Wrench operator()(const Load& load, const BodyState& s) const;
 
  private:
   Mat44 effectiveness_;

@@ -70,7 +70,7 @@ class Simulator {
 
  private:
   double thrustScale() const { return battery_.thrustScale() * stress_.plant.thrust_scale; }
-  Wrench wrenchOf(const Vec4& thrust, const BodyState& s, int64_t start_utime) const;
+  Wrench wrenchOf(const RotorWrench::Load& rotors, const BodyState& s, int64_t start_utime) const;
 
   VehicleParams vehicle_;  // what the stack assumes: MOTOR_CMD checks, the battery's calibration
   SimParams params_;
@@ -97,6 +97,7 @@ class Simulator {
   Vec3 wind_velocity_ = Vec3::Zero();
   bool on_ground_ = true;
   bool crashed_ = false;
+  bool payload_dropped_ = false;  // stress_.payload_drop has happened: body_properties_.mass is the lighter one
   int64_t truth_seq_ = 0;
 };
 

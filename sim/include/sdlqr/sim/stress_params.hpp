@@ -10,6 +10,7 @@
 //     wind: {steady: [2, 0, 0], gust_std: [1, 1, 0.5], gust_time_constant: 1.0, body_drag: 0.01}
 //     airborne_start: {position: [0, 0, 3], attitude_deg: [180, 0, 0], velocity: [0, 0, 0], body_rate: [0, 0, 0]}
 //     throw: {at: 3.0, hold_position: [0, 0, 1.2], velocity: [1, 0, 3], duration: 0.3, body_rate: [0, 0, 0]}
+//     payload_drop: {at: 12.0, mass_scale: 0.85}
 
 #include <string>
 
@@ -75,11 +76,23 @@ struct ThrowEvent {
   double releaseTime() const { return at + duration; }
 };
 
+// A payload let go in flight: from `at` on the plant's mass is `mass_scale` times what it was (a
+// payload hung at the centre of mass: the inertia is kept). at < 0 (the default): none.
+struct PayloadDrop {
+  double at;          // [s] simulation time of the drop
+  double mass_scale;  // [-] mass after over mass before
+
+  PayloadDrop();
+  static const ParamTable<PayloadDrop>& declaration();
+  bool enabled() const { return at >= 0.0; }
+};
+
 struct SimStress {
   PlantOverride plant;
   WindParams wind;
   AirborneStart airborne_start;
   ThrowEvent throw_event;
+  PayloadDrop payload_drop;
 
   SimStress();
   static const ParamTable<SimStress>& declaration();

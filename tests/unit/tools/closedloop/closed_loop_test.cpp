@@ -69,6 +69,43 @@ TEST(ClosedLoop, SameScenarioAndSeedFlyTheSameFlightBitForBit) {
   }
 }
 
+// A batch worker records each flight into the memory of its last one (ClosedLoop::recordInto):
+// the flight is the same as into a new log, nothing of the earlier flight stays, and the 1 kHz
+// and 250 Hz series were reserved whole (their storage never moved while flying).
+TEST(ClosedLoop, AFlightRecordedIntoAnEarlierFlightsMemoryIsTheSameAndNeverReallocates) {
+  const mission::Scenario scenario = mission::Scenario::load(kSourceDir + "/config/scenarios/hover_jumps.yaml");
+  const closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);
+  closedloop::RecordOptions record;
+  record.motor_command = true;
+  closedloop::ClosedLoop first(config, scenario, record);
+  const SimTruth* truth_storage = first.log().sim_truth.messages.data();
+  const StateEstimate* estimate_storage = first.log().state_estimate.messages.data();
+  const MotorCommand* motor_storage = first.log().motor_command.messages.data();
+  first.run();
+  EXPECT_EQ(first.log().sim_truth.messages.data(), truth_storage);
+  EXPECT_EQ(first.log().state_estimate.messages.data(), estimate_storage);
+  EXPECT_EQ(first.log().motor_command.messages.data(), motor_storage);
+  const logger::FlightLog fresh = first.log();
+
+  closedloop::ClosedLoop second(config, scenario, record);
+  second.recordInto(first.takeLog());
+  EXPECT_TRUE(first.log().sim_truth.empty());
+  EXPECT_TRUE(second.log().sim_truth.empty());
+  EXPECT_EQ(second.log().sim_truth.messages.data(), truth_storage);  // the first flight's memory
+  second.run();
+  const logger::FlightLog& reused = second.log();
+  EXPECT_EQ(reused.sim_truth.messages.data(), truth_storage);
+  ASSERT_EQ(reused.sim_truth.size(), fresh.sim_truth.size());
+  for (size_t i = 0; i < fresh.sim_truth.size(); ++i) {
+    ASSERT_EQ(reused.sim_truth[i].position, fresh.sim_truth[i].position) << "sample " << i;
+  }
+  EXPECT_EQ(reused.state_estimate.size(), fresh.state_estimate.size());
+  EXPECT_EQ(reused.motor_command.size(), fresh.motor_command.size());
+  EXPECT_EQ(reused.rate_command.size(), fresh.rate_command.size());
+  EXPECT_EQ(reused.command.size(), fresh.command.size());
+  EXPECT_EQ(reused.gains.size(), fresh.gains.size());
+}
+
 // sdlqr-mission re-sends its current command once a second with the same seq (for a restarted
 // controller): the analysis sees one setpoint per command, not one per re-send.
 TEST(ClosedLoop, ReSentCommandsInTheLogDoNotAddSetpoints) {

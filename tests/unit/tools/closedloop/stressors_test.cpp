@@ -216,9 +216,11 @@ TEST(Stressors, FeasibleFastPathsAreFlownAndNotAborted) {
   expectAllPass(f);
 }
 
-// A reference the vehicle cannot follow (a foreign TRAJECTORY running off at 12 m/s towards the
-// geofence) is aborted by the guard into a hold where the vehicle is: counted in the controller's
-// HEARTBEAT counters, seen by the analysis, and the vehicle stops well inside the fence.
+// A reference the vehicle cannot follow (a foreign TRAJECTORY whose samples claim rest and hover
+// thrust, within every limit the controller checks, but whose positions run off at 12 m/s towards
+// the geofence) is aborted by the guard into a hold where the vehicle is: counted in the
+// controller's HEARTBEAT counters, seen by the analysis, and the vehicle stops well inside the fence.
+// The same path whose samples say 12 m/s is refused on arrival (beyond the guard's speed).
 TEST(Stressors, GuardAbortsARunawayTrajectoryIntoAHold) {
   mission::Scenario hover = scenarioNamed("hover_steady");
   hover.duration = 16.0;
@@ -237,6 +239,10 @@ TEST(Stressors, GuardAbortsARunawayTrajectoryIntoAHold) {
     s.u = makeInput(Vec3::Zero(), kDefaultGravity);
     runaway.samples.push_back(s);
   }
+  loop.inject(runaway);
+  EXPECT_EQ(loop.controller().health().rejections(Stream::kTrajectory, RejectReason::kRefused), 1) << "12 m/s declared: beyond the guard's 6";
+  for (TrajectorySample& s : runaway.samples) velocity(s.x).setZero();
+  runaway.seq = 1;
   loop.inject(runaway);
   loop.run();
   const Counters& counters = loop.controller().health().counters();
@@ -264,7 +270,7 @@ TEST(Stressors, InfeasiblePathIsRefusedWithTheFeasibilityReport) {
   }
   ASSERT_NE(lemniscate, nullptr);
   const closedloop::StackConfig config = closedloop::StackConfig::load(s.vehicle_path);
-  lemniscate->trajectory.scale_if_infeasible = false;
+  lemniscate->trajectory.on_infeasible = mission::OnInfeasible::kRefuse;
   try {
     closedloop::ClosedLoop loop(config, s);
     ADD_FAILURE() << "an infeasible lemniscate was accepted";

@@ -128,7 +128,7 @@ TEST(Wiring, TheMissionTakesEstimatesOnlyInThrowMode) {
   const std::string dir = std::string(SDLQR_SOURCE_DIR) + "/config/scenarios/";
   const auto estimatePortActive = [&](const std::string& scenario_file) {
     const mission::Scenario scenario = mission::Scenario::load(dir + scenario_file);
-    const mission::MissionCore core(scenario, trajectory::TrajectoryParams{}, LqrParams{}, {});
+    const mission::MissionCore core(scenario, trajectory::TrajectoryParams{}, mission::PathLimits{}, {});
     bool active = false;
     ports::forEachInput<mission::MissionCore>([&](const auto& port) {
       if constexpr (std::is_same_v<typename std::decay_t<decltype(port)>::Msg, StateEstimate>) active = port.active(core);

@@ -47,8 +47,9 @@ TEST(Benchmark, TheShippedBenchmarkLoadsEveryLawEveryExperimentAndTheSweep) {
   std::vector<std::string> names;
   for (const Experiment& e : b.experiments) names.push_back(e.name);
   const std::vector<std::string> expected = {"hover_jumps", "minsnap_fast", "ellipse_infeasible", "minsnap_pulled",
-                                             "minsnap_pulled_temporal", "mass_plus20", "wind_gusts", "recover_60",
-                                             "recover_120", "recover_180", "throw"};
+                                             "minsnap_pulled_temporal", "mass_plus20", "hover_jumps_mass_plus20",
+                                             "payload_drop", "wind_gusts", "recover_60", "recover_120", "recover_180",
+                                             "throw"};
   EXPECT_EQ(names, expected);
   ASSERT_TRUE(b.has_sweep);
   EXPECT_EQ(b.sweep.fail_on, (std::vector<std::string>{"path_error_rms", "path_error_max"}));

@@ -128,7 +128,11 @@ TEST_F(SmallComparison, TheReportHasEveryTable) {
   for (const std::string part : {"## Summary", "## speed_sweep: short_circle", "## short_hover", "## short_circle",
                                  "path_error_rms_max [m]",
                                  "## Where sdlqr is not the best", "| `sdlqr` |", "| `geometric` |",
-                                 "jump_settle_time_max [s]", "pull_return_time_max [s]", "| 0.5 m/s |"}) {
+                                 "jump_settle_time_max [s]", "pull_return_time_max [s]", "| 0.5 m/s |",
+                                 // the headline (headline.hpp): per vehicle and law, the fastest speed within the
+                                 // criteria, and sdlqr against the others
+                                 "## Headline", "| quad255 | `sdlqr` |", "| quad255 | `geometric` |",
+                                 "- sdlqr vs `geometric`:"}) {
     EXPECT_NE(report.find(part), std::string::npos) << part;
   }
   // A metric that applies to no flight of the experiment has no column.
@@ -139,12 +143,12 @@ TEST_F(SmallComparison, TheReportHasEveryTable) {
   EXPECT_FALSE(std::ifstream(kRunWork + "/jobs1/tracks/short_hover.path.csv").good()) << "no upload, no path file";
 }
 
-// The negative: a speed known to be beyond the path criteria (measured 2026-12-02: path error RMS
-// 0.39 m at 3.5 m/s for both laws, the limit 0.15 m; 0.015 m at 1 m/s) fails, where the slow range
-// above passed.
+// The negative: a speed known to be beyond the path criteria (short_circle_tight.yaml: RMS 0.09 m
+// at 3.5 m/s for both laws, the limit 0.03 m) fails, where the slow range above passed.
 TEST(SpeedSweep, FindsTheFailingSpeedOnARangeBeyondThePathCriteria) {
   Benchmark b = Benchmark::load(kDir + "/small_benchmark.yaml");
   b.experiments.clear();
+  b.sweep.scenario_path = kDir + "/short_circle_tight.yaml";
   b.sweep.speeds = {3.5};
   const CompareResult r = runQuietly(b, 2);
   ASSERT_EQ(r.sweeps.size(), 2u);

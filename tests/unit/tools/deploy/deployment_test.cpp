@@ -119,3 +119,24 @@ TEST(Deployment, OneHostMayKeepTheDefaultTtl) {
 
 }  // namespace
 }  // namespace sdlqr::deploy
+
+namespace sdlqr::deploy {
+namespace {
+
+TEST(Deployment, ThePx4DeploymentNamesItsOwnTableAndSignsItsMavlinkLink) {
+  const std::string path = std::string(SDLQR_SOURCE_DIR) + "/config/deploy/px4_emulated.yaml";
+  const std::string procs = deploymentProcs(path);
+  EXPECT_EQ(procs, std::string(SDLQR_SOURCE_DIR) + "/config/deploy/../px4_emulated.procs");
+  const Deployment d = loadDeployment(path, stackProcessNames(procs));
+  EXPECT_EQ(d.hostOf("emulator")->name, "autopilot");
+  EXPECT_EQ(d.hostOf("px4")->name, "companion");
+  EXPECT_EQ(d.hostOf("controller")->name, "companion");
+  EXPECT_TRUE(d.mavlink_signing);
+  const std::string text = describe(d);
+  EXPECT_NE(text.find("procs=" + procs + "\n"), std::string::npos);
+  EXPECT_NE(text.find("mavlink_signing=on\n"), std::string::npos);
+  EXPECT_EQ(deploymentProcs(std::string(SDLQR_SOURCE_DIR) + "/config/deploy/three_hosts.yaml"), "");
+}
+
+}  // namespace
+}  // namespace sdlqr::deploy

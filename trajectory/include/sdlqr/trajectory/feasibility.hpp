@@ -44,9 +44,17 @@ struct FeasibilityReport {
   bool feasible() const { return speed_ok && max_thrust_ok && min_thrust_ok && body_rate_ok && consistency_ok; }
 };
 
+// The building blocks of every check: one point's speed and inputs into the report's extremes, then
+// the verdicts against the limits.
+void accountSample(FeasibilityReport& report, const Vec3& velocity, const Input& u);
+void judgeReport(FeasibilityReport& report, const FeasibilityLimits& limits);
+
 FeasibilityReport checkFeasibility(const MinSnapTrajectory& polynomial, const FeasibilityLimits& limits,
                                    double gravity, double grid_dt);
 FeasibilityReport checkFeasibility(const Trajectory& trajectory, const FeasibilityLimits& limits, double gravity);
+
+// The limits a report fails, "max |omega| 2.39 > 2 rad/s; max thrust 20.2 > 18 m/s^2;" (empty: none).
+std::string describeViolations(const FeasibilityReport& report, const FeasibilityLimits& limits);
 
 // A few lines "max speed  2.999 m/s  <= 3.000  pass" for the CLI.
 std::string formatReport(const FeasibilityReport& report, const FeasibilityLimits& limits);

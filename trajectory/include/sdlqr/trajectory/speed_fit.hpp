@@ -23,6 +23,13 @@ struct SpeedFit {
 SpeedFit fitSpeed(const std::function<Trajectory(double)>& generate, double requested_speed,
                   const FeasibilityLimits& limits, double gravity, double min_speed = 0.05);
 
+// The same path flown `factor` times as fast (0 < factor): times divided by it, each sample's
+// velocity, acceleration and jerk (from its own inputs, transition.hpp flatStateOf) multiplied by
+// factor, factor^2, factor^3, and its state and inputs made again by the flat map. Exact for a
+// trajectory whose samples are a flat map's (generated, or a CSV written from one); a hand-made
+// one (the paper's ellipse) keeps its attitudes, which never matched its motion.
+Trajectory timeScaled(const Trajectory& trajectory, double factor, double gravity);
+
 // One line: "at 3 m/s the path is beyond the vehicle: max |omega| 2.61 > 2 rad/s; feasible up to 2.41 m/s".
 std::string describeFit(const SpeedFit& fit, const FeasibilityLimits& limits);
 

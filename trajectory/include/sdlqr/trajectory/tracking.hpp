@@ -27,6 +27,13 @@
 // sample before the start and to the last after the end (open), or wrapped into laps of period
 // t_last - t_first (closed).
 //
+// A path that starts at rest (the paper's rest-to-rest min-snap) starts by the clock in either
+// mode: Algorithm 1 alone leaves the reference on the first sample, at rest, until noise moves the
+// vehicle past it (measured: 0.4 s for sdlqr, 2.4 s for sdlqr_integral, whose integral holds the
+// vehicle on the reference). Until the path's first sample at kStartSpeed is due by the clock the
+// spatial reference is the further along of Algorithm 1's and the temporal one, then Algorithm 1's
+// alone (a path that starts moving has no such window).
+//
 // Switching keeps the place: entering temporal mode continues from the current reference's
 // trajectory time (start_time becomes now - reference time), so the reference does not jump and
 // then runs with the clock; entering spatial mode continues Algorithm 1 from the temporal
@@ -101,6 +108,8 @@ class TemporalTracker final : public TrackingScheme {
 // What the controller holds: the trajectory, both schemes and the active one.
 class TrajectoryTracker {
  public:
+  static constexpr double kStartSpeed = 0.1;  // [m/s] see "starts at rest" above
+
   TrajectoryTracker() = default;
   // The schemes point at the member trajectory: a copy's point at its own (the replay tries a
   // COMMAND on a copy of the controller). Not assignable.
@@ -112,6 +121,8 @@ class TrajectoryTracker {
   // [s] is when temporal time 0 is. On error returns "sample k: reason" and keeps the previous one.
   std::string load(Trajectory trajectory, double start_time, const SampleChecks& checks = {});
   void clear() { loaded_ = false; }
+  // Back to the first sample, temporal time 0 at start_time [s] (after an entry into the path).
+  void restart(double start_time);
   bool loaded() const { return loaded_; }
   const Trajectory& trajectory() const { return trajectory_; }
 
@@ -130,6 +141,8 @@ class TrajectoryTracker {
   TrackingScheme* active_ = &spatial_;
   TrackingOutput last_;
   bool loaded_ = false;
+  double start_time_ = 0.0;    // [s] temporal time 0 of the path (restart)
+  double start_window_ = 0.0;  // [s] from it, until the path's first sample at kStartSpeed is due
 };
 
 }  // namespace sdlqr::trajectory

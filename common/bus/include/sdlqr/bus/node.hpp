@@ -122,6 +122,11 @@ class Node {
   void setBusKey(const BusKey& key);
   bool signing() const { return signer_ != nullptr; }
 
+  // Another input of the process (a MAVLink link's socket) handled in the same thread and loop as
+  // the bus: spin() and waitReadable() also wait on `fd`, and spin() calls on_readable() when it is
+  // readable (or in error: the callback reads and sees). At most a few beside the bus's sockets.
+  void watchDescriptor(int fd, std::function<void()> on_readable);
+
   // Handles messages for up to timeout_ms and publishes HEARTBEAT when one is due.
   // Returns false once SIGINT or SIGTERM has been received.
   bool spin(int timeout_ms);
@@ -270,6 +275,11 @@ class Node {
   std::vector<PublishChannel> publish_channels_;
   std::vector<std::pair<std::string, lcm::LCM*>> encoded_channels_;  // publishEncoded's, found once
   std::vector<Endpoint*> receiving_;  // the endpoints handleReady polls
+  struct Watched {
+    int fd;
+    std::function<void()> on_readable;
+  };
+  std::vector<Watched> watched_;  // watchDescriptor's, polled after the endpoints
   ProcessHealth own_health_;
   ProcessHealth* health_ = &own_health_;
   struct DelayedMessage {

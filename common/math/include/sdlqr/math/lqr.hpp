@@ -56,7 +56,8 @@ struct LqrResult {
 // kNotConverged: iteration limit reached. kNumericalFailure: a non-finite intermediate, or K
 // whose tangent closed loop Ad_r + Bd_r K_r is not proven Schur stable. kOk guarantees a finite K
 // and a proven-stable tangent closed loop. No heap allocation.
-LqrResult solveLqr(const State& x_lin, const Input& u_lin, const LqrParams& params);
+// thrust_gain: the model's (model.hpp linearize); 1 is the paper's.
+LqrResult solveLqr(const State& x_lin, const Input& u_lin, const LqrParams& params, double thrust_gain = 1.0);
 
 // --- pieces, public for tests and benchmarks ---
 

@@ -40,7 +40,9 @@ struct ExtendedLqrResult {
 // Solves the model of params.law: the extensions as above; every other law the paper's model
 // (solveLqr, bit for bit, K_aug zero). Preconditions and statuses as solveLqr; the tangent
 // method only (an extension with method iterative is kInvalidInput).
-ExtendedLqrResult solveLqrForLaw(const State& x_lin, const Input& u_lin, const LqrParams& params);
+// thrust_gain: the paper's model's (sdlqr_adaptive, model.hpp linearize); the extensions keep 1.
+ExtendedLqrResult solveLqrForLaw(const State& x_lin, const Input& u_lin, const LqrParams& params,
+                                 double thrust_gain = 1.0);
 
 // The largest closed-loop eigenvalue modulus of the discretized extended model under (K, K_aug)
 // (NaN when not computable): the receiver's own check of an extension's gains.

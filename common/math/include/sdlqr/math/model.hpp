@@ -21,7 +21,10 @@ struct Linearization {
 };
 
 // Gravity is constant in the world frame, so it does not appear in the Jacobians.
-Linearization linearize(const State& x, const Input& u);
+// thrust_gain theta: the model's produced over commanded thrust (v_dot = g + theta c R e_z; 1 in the
+// paper). u's thrust is then the one produced (theta c), so A does not change with theta and B's
+// thrust column is theta times the paper's.
+Linearization linearize(const State& x, const Input& u, double thrust_gain = 1.0);
 
 // d(q / ||q||)/dq, eq. (18).
 Mat4 unitProjectionJacobian(const Quat& q);

@@ -6,7 +6,8 @@
 // The path is the polyline through the trajectory's samples (a closed trajectory repeats it lap
 // after lap). Positions are SIM_TRUTH. The window of a trajectory runs from its start until the
 // reference reaches the last sample (open) or until the controller stops publishing references
-// of it (a later GOTO or LAND); see completion_radius.
+// of it (a later GOTO or LAND); see completion_radius. A path entered through a transition
+// (REFERENCE mode TRANSITION, controller/reference_generator.hpp) starts where the entry ends.
 //
 // Skipped samples. The controller's REFERENCE (index i, gamma) unrolled over laps gives the
 // reference's arc position s_ref(t). A sample at arc position s_k the reference has passed is
@@ -91,7 +92,8 @@ struct PathTrackingReport {
   int samples = 0;
   double path_length = 0.0;          // [m] one lap of the polyline
   double duration = 0.0;             // [s] trajectory time of the last sample
-  double start = 0.0;                // [s] simulation time the trajectory started
+  double start = 0.0;                // [s] simulation time the path started (after its entry)
+  double entry_time = 0.0;           // [s] from the upload to the path: the entry's duration (0: none)
   double end = 0.0;                  // [s] end of the analysed window
   bool completed = false;            // the reference came within completion_radius of the end (open)
   double completion_time = std::numeric_limits<double>::quiet_NaN();  // [s] after start

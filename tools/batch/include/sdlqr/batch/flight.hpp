@@ -45,9 +45,10 @@ struct FlownFlight {
 // The nominal stack with the controller process running `controller` (a law of lqr.law).
 closedloop::StackConfig stackFlying(const BatchContext& context, const std::string& controller);
 // Flies one world with one controller; MOTOR_CMD is recorded (and the rotor saturation counted)
-// when the scenario judges it or `record_motor_commands` asks for it.
+// when the scenario judges it or `record_motor_commands` asks for it. The flight is recorded into
+// `storage`'s memory: a worker hands back its last flight's log and allocates nothing.
 FlownFlight fly(const BatchContext& context, const FlightWorld& world, const std::string& controller,
-                bool record_motor_commands = false);
+                bool record_motor_commands = false, logger::FlightLog storage = {});
 // The world of a draw (throws ConfigError "flight 17: vehicle.mass: ..." when it is no valid plant).
 FlightWorld worldOf(const BatchContext& context, const FlightDraw& draw);
 // The CSV row of a flown draw, '\n' included.

@@ -43,6 +43,10 @@ void sortRows(Table& table, const std::vector<std::string>& controllers);
 void writeTable(const Table& table, const std::string& path);  // atomically (temporary file + rename)
 Table readTable(const std::string& path);                      // throws std::runtime_error naming the file
 
+// Refuses (std::runtime_error naming the folder) a folder that holds another batch, or another
+// shard of this one; a folder without batch.yaml passes.
+void checkBatchFolder(const std::string& dir, const BatchContext& context, const Shard& shard);
+
 // The journal of a folder: opens (creating the folder) or continues it.
 class Journal {
  public:

@@ -80,6 +80,11 @@ class ClosedLoop {
 
   int64_t utime() const { return sim_.simulator().utime(); }
   const logger::FlightLog& log() const { return recorder_.log; }
+  // Records into `storage`'s memory (emptied first), before the first step: a caller flying
+  // flight after flight hands back the last flight's log and the next one allocates nothing.
+  void recordInto(logger::FlightLog&& storage);
+  // The recorded flight, moved out: the loop's own log is left empty.
+  logger::FlightLog takeLog();
   const sim::SimCore& sim() const { return sim_; }
   const estimator::EstimatorCore& estimator() const { return estimator_; }
   const gains::GainsCore& gains() const { return gains_; }
@@ -99,7 +104,7 @@ class ClosedLoop {
       } else if constexpr (std::is_same_v<Msg, MotorCommand>) {
         if (!options.motor_command) return;
       }
-      if constexpr (logger::FlightLog::kRecords<Msg> && !std::is_same_v<Msg, SimClockTick>) {
+      if constexpr (logger::kFlightLogRecords<Msg> && !std::is_same_v<Msg, SimClockTick>) {
         logger::Series<Msg>& series = log.series<Msg>();
         series.messages.push_back(m);
         series.receive_utime.push_back(m.utime);
@@ -107,7 +112,14 @@ class ClosedLoop {
     }
   };
 
+  // Room for the whole flight in the 1 kHz and 250 Hz series, so recording never reallocates.
+  void reserveRecording();
+
   Recorder recorder_;
+  double duration_s_;
+  int truth_rate_hz_;
+  int imu_rate_hz_;
+  int64_t estimate_period_us_;
   sim::SimCore sim_;
   estimator::EstimatorCore estimator_;
   lowlevel::LowlevelCore lowlevel_;

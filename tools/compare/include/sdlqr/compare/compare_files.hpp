@@ -27,6 +27,12 @@ std::string pathCsv(const CompareResult& result, const std::string& experiment);
 // Every file above into `dir` (created); throws std::runtime_error naming a file it cannot write.
 void writeCompareFiles(const Benchmark& benchmark, const CompareResult& result, const std::string& dir);
 
+// The folder name of a benchmark among several: its file's name without ".yaml".
+std::string benchmarkName(const Benchmark& benchmark);
+// DIR/report.md for several benchmarks: the headline of them all (headline.hpp) and each one's report.
+void writeHeadlineFile(const std::vector<Benchmark>& benchmarks, const std::vector<CompareResult>& results,
+                       const std::string& dir);
+
 // The names of a flight's failed checks, "; "-separated.
 std::string failedChecks(const analysis::FlightReport& report);
 

@@ -27,6 +27,7 @@ struct ExperimentInfo {
 };
 
 struct CompareResult {
+  std::string vehicle_path;                 // the vehicle file of the sweep's scenario, else the first experiment's
   std::vector<ExperimentInfo> experiments;  // in the benchmark's order
   std::vector<ExperimentFlight> flights;  // experiment-major, controllers in the benchmark's order
   std::vector<SweepResult> sweeps;        // one per controller, when the benchmark has a sweep

@@ -24,6 +24,11 @@ struct Deployment {
   std::string monitor;     // host of the launcher's own bus tools (calibration, heartbeat wait)
   // A signed bus (docs/hosts-and-signing.md, Signed bus): key `signing`, by default on across hosts, off on one.
   bool signing = true;
+  // The stack table this deployment places (key `procs`, relative to the deployment file); empty:
+  // the launcher's, config/stack.procs. Its rows may name a host's address as {address:HOST}.
+  std::string procs;
+  // A MAVLink link signed with a key generated for the run (key `mavlink_signing`; docs/px4.md).
+  bool mavlink_signing = false;
   std::vector<Host> hosts;
 
   const Host* hostOf(const std::string& process) const;
@@ -36,11 +41,15 @@ inline constexpr size_t kMaxHostName = 12;  // "h-" + name fits Linux's 15-chara
 // Throws ConfigError naming the key.
 Deployment loadDeployment(const std::string& path, const std::vector<std::string>& stack_processes);
 
+// The stack table a deployment file names (key `procs`, resolved against the file's folder), or
+// empty when it names none. Throws ConfigError as loadDeployment.
+std::string deploymentProcs(const std::string& path);
+
 // The process names of a stack table (the first word of every row that is not a comment).
 std::vector<std::string> stackProcessNames(const std::string& procs_path);
 
-// One `key=value` line per field and one `host=NAME ADDRESS DELAY_MS PROCESS...` line per host,
-// for scripts/deploy.
+// One `key=value` line per field (procs and mavlink_signing only when set) and one
+// `host=NAME ADDRESS DELAY_MS PROCESS...` line per host, for scripts/deploy.
 std::string describe(const Deployment& deployment);
 
 }  // namespace sdlqr::deploy

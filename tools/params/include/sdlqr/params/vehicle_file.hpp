@@ -16,6 +16,8 @@
 #include "sdlqr/lowlevel/lowlevel_params.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/math/vehicle.hpp"
+#include "sdlqr/px4/bridge_params.hpp"
+#include "sdlqr/px4emu/emulator_params.hpp"
 #include "sdlqr/sim/sim_params.hpp"
 #include "sdlqr/trajectory/params.hpp"
 
@@ -33,6 +35,8 @@ struct VehicleFile {
   trajectory::TrajectoryParams trajectory;
   FaultParams faults;
   ValidationLimits validation;
+  px4::BridgeParams px4;
+  px4emu::EmulatorParams px4_emulator;
 
   // Every section of `path` (empty: the defaults) and the rules across sections (the lowlevel
   // against the airframe and the validation limits); throws ConfigError naming the key.
@@ -54,6 +58,8 @@ void forEachSection(File& file, Visit&& visit) {
   visit("trajectory", file.trajectory);
   visit("faults", file.faults);
   visit("validation", file.validation);
+  visit("px4", file.px4);
+  visit("px4_emulator", file.px4_emulator);
 }
 
 // Each section's name and declaration, in file order.

@@ -1,0 +1,144 @@
+#include "sdlqr/mavlinkgen/emit.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <sstream>
+
+namespace sdlqr::mavlinkgen {
+
+namespace {
+
+// "SET_ATTITUDE_TARGET" -> "SetAttitudeTarget"
+std::string camel(const std::string& upper) {
+  std::string out;
+  bool next_upper = true;
+  for (char c : upper) {
+    if (c == '_') {
+      next_upper = true;
+      continue;
+    }
+    out += next_upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(c)))
+                      : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    next_upper = false;
+  }
+  return out;
+}
+
+std::string lower(const std::string& s) {
+  std::string out = s;
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// The first sentence of a description, on one line, for a comment.
+std::string firstSentence(const std::string& text) {
+  std::string flat;
+  for (char c : text) flat += (c == '\n' || c == '\r' || c == '\t') ? ' ' : c;
+  const size_t stop = flat.find(". ");
+  std::string out = stop == std::string::npos ? flat : flat.substr(0, stop + 1);
+  if (out.size() > 110) out = out.substr(0, 107) + "...";
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
+// "MAV_RESULT_ACCEPTED" of MAV_RESULT -> "kAccepted"; "MAV_CMD_DO_SET_MODE" -> "kDoSetMode".
+std::string entryName(const Enum& e, const EnumEntry& entry) {
+  std::string rest = entry.name;
+  if (rest.rfind(e.name + "_", 0) == 0) rest = rest.substr(e.name.size() + 1);
+  std::string name = "k" + camel(rest);
+  if (std::isdigit(static_cast<unsigned char>(name[1]))) name = "k_" + name.substr(1);
+  return name;
+}
+
+std::string cppType(const Field& f) {
+  return f.array_length > 0 ? "std::array<" + f.type + ", " + std::to_string(f.array_length) + ">" : f.type;
+}
+
+void emitEnum(std::ostringstream& out, const Enum& e) {
+  out << "// " << e.name << (e.bitmask ? " (bitmask)" : "") << ": " << firstSentence(e.description) << "\n";
+  out << "namespace " << lower(e.name) << " {\n";
+  for (const EnumEntry& entry : e.entries) {
+    out << "inline constexpr uint32_t " << entryName(e, entry) << " = " << entry.value << ";  // " << entry.name;
+    const std::string about = firstSentence(entry.description);
+    if (!about.empty()) out << ": " << about;
+    out << "\n";
+  }
+  out << "}  // namespace " << lower(e.name) << "\n\n";
+}
+
+void emitField(std::ostringstream& out, const Field& f, int version) {
+  out << "  " << cppType(f) << " " << f.name;
+  out << (f.mavlink_version ? " = " + std::to_string(version) : (f.array_length > 0 ? "{}" : " = 0")) << ";";
+  out << "  //";
+  if (!f.units.empty()) out << " [" << f.units << "]";
+  if (!f.enum_name.empty()) out << " " << f.enum_name << ":";
+  if (f.extension) out << " (extension)";
+  out << " " << firstSentence(f.description) << "\n";
+}
+
+void emitMessage(std::ostringstream& out, const Message& m, int version) {
+  const std::vector<Field> wire = wireOrder(m);
+  out << "// " << m.name << " (" << m.id << "): " << firstSentence(m.description) << "\n";
+  out << "struct " << camel(m.name) << " {\n";
+  out << "  static constexpr uint32_t kId = " << m.id << ";\n";
+  out << "  static constexpr std::string_view kName = \"" << m.name << "\";\n";
+  out << "  static constexpr uint8_t kCrcExtra = " << static_cast<int>(crcExtra(m)) << ";\n";
+  out << "  static constexpr uint8_t kMinLength = " << minLength(m) << ";  // [bytes] without the extensions\n";
+  out << "  static constexpr uint8_t kMaxLength = " << maxLength(m) << ";  // [bytes]\n\n";
+  for (const Field& f : wire) emitField(out, f, version);
+  out << "\n  // Writes the kMaxLength payload bytes in wire order.\n";
+  out << "  void encode(uint8_t* payload) const {\n";
+  int offset = 0;
+  for (const Field& f : wire) {
+    out << "    wire::put(payload + " << offset << ", " << f.name << ");\n";
+    offset += typeSize(f.type) * std::max(1, f.array_length);
+  }
+  out << "  }\n  // Reads kMaxLength payload bytes (a truncated payload zero-filled first).\n";
+  out << "  void decode(const uint8_t* payload) {\n";
+  offset = 0;
+  for (const Field& f : wire) {
+    out << "    wire::get(payload + " << offset << ", " << f.name << ");\n";
+    offset += typeSize(f.type) * std::max(1, f.array_length);
+  }
+  out << "  }\n  // visit(name, field) for every field, in wire order.\n";
+  for (const char* qualifier : {"", " const"}) {
+    out << "  template <class Visit>\n  void visitFields(Visit&& visit)" << qualifier << " {\n";
+    for (const Field& f : wire) out << "    visit(\"" << f.name << "\", " << f.name << ");\n";
+    out << "  }\n";
+  }
+  out << "};\n\n";
+}
+
+}  // namespace
+
+std::string emitMessagesHeader(const Definitions& definitions, const std::string& source_note) {
+  std::vector<Message> messages = definitions.messages;
+  std::sort(messages.begin(), messages.end(), [](const Message& a, const Message& b) { return a.id < b.id; });
+  std::ostringstream out;
+  out << "#pragma once\n// Generated by sdlqr_mavlink_gen (mavlink/gen) from " << source_note << ": do not edit.\n"
+      << "// Each message a struct of its fields in wire order, with its id, CRC extra and payload lengths,\n"
+      << "// encode/decode of the payload and a field visit; each enum a namespace of its values.\n\n"
+      << "#include <array>\n#include <cstdint>\n#include <string_view>\n#include <tuple>\n\n"
+      << "#include \"sdlqr/mavlink/message_info.hpp\"\n#include \"sdlqr/mavlink/wire.hpp\"\n\n"
+      << "namespace sdlqr::mavlink {\n\n";
+  for (const Enum& e : definitions.enums) emitEnum(out, e);
+  for (const Message& m : messages) emitMessage(out, m, definitions.version);
+  out << "// Every message above, by id.\nusing AllMessages = std::tuple<";
+  for (size_t i = 0; i < messages.size(); ++i) out << (i ? ", " : "") << camel(messages[i].name);
+  out << ">;\n\n// Where a core puts the messages it sends, one overload per message: the main frames and writes\n"
+      << "// them (FrameWriter), a test keeps them.\nclass MessageSink {\n public:\n  virtual ~MessageSink() = default;\n";
+  for (const Message& m : messages) out << "  virtual void send(const " << camel(m.name) << "& m) = 0;\n";
+  out << "};\n\n// A MessageSink handing every message to one generic callable, sink(const M&).\n"
+      << "template <class Sink>\nclass MessageSinkTo : public MessageSink {\n public:\n"
+      << "  explicit MessageSinkTo(Sink sink) : sink_(sink) {}\n";
+  for (const Message& m : messages) out << "  void send(const " << camel(m.name) << "& m) override { sink_(m); }\n";
+  out << "\n private:\n  Sink sink_;\n};\n\ninline constexpr MessageInfo kMessageTable[] = {\n";
+  for (const Message& m : messages) {
+    out << "    {" << m.id << ", " << static_cast<int>(crcExtra(m)) << ", " << minLength(m) << ", " << maxLength(m)
+        << ", \"" << m.name << "\"},\n";
+  }
+  out << "};\n\n}  // namespace sdlqr::mavlink\n";
+  return out.str();
+}
+
+}  // namespace sdlqr::mavlinkgen

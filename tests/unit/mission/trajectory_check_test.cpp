@@ -1,0 +1,103 @@
+// Every trajectory source goes through the one check (trajectory/path_check.hpp) when a scenario
+// is loaded: a CSV file like a generated circle, the paper's ellipse; refused with the report,
+// scaled (a CSV by time scaling), or flown as given on request; the entry and the exit included.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "sdlqr/mission/trajectory_request.hpp"
+#include "sdlqr/trajectory/closed_paths.hpp"
+#include "sdlqr/trajectory/trajectory_csv.hpp"
+#include "test_paths.hpp"
+
+namespace sdlqr::mission {
+namespace {
+
+constexpr double kGravity = 9.81;
+
+PathLimits paperLimits() { return {LqrParams(), trajectory::TrajectoryGuardParams(), trajectory::TransitionParams()}; }
+
+Trajectory circle(double speed) {
+  trajectory::ClosedPathSpec spec;
+  spec.speed = speed;
+  spec.size = 1.5;
+  spec.center = Vec3(0.0, 0.0, 1.5);
+  return trajectory::sampleClosedPath(spec, kGravity);
+}
+
+TrajectoryRequest csvRequest(const Trajectory& path, const std::string& name) {
+  const std::string file = sdlqr::test::tempPath(name);
+  trajectory::writeTrajectoryCsv(file, path);
+  TrajectoryRequest request;
+  request.generator = "csv";
+  request.csv_path = file;
+  return request;
+}
+
+std::string refusalOf(const TrajectoryRequest& request, const PathLimits& limits = paperLimits()) {
+  try {
+    buildTrajectory(request, trajectory::TrajectoryParams(), limits, Vec3(1.5, 0, 1.5), 0.0, "events[3].trajectory");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+// GIVEN a circle written to a CSV file WHEN it is within the vehicle THEN it is accepted as the
+// generator's would be; beyond omega_max it is refused with the report and the feasible speed.
+TEST(TrajectoryCheck, ACsvFileIsCheckedLikeAGeneratedPath) {
+  EXPECT_EQ(refusalOf(csvRequest(circle(3.25), "circle_325.csv")), "accepted");
+  const std::string refused = refusalOf(csvRequest(circle(4.0), "circle_4.csv"));
+  EXPECT_NE(refused.find("events[3].trajectory: at 4 m/s the path is beyond the vehicle"), std::string::npos)
+      << refused;
+  EXPECT_NE(refused.find("max |omega|"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("feasible up to 3.5"), std::string::npos) << refused;
+}
+
+// on_infeasible: scale flies a CSV slower by time scaling: the same circle as the generator makes
+// at that speed, to the flat map's exactness.
+TEST(TrajectoryCheck, AScaledCsvIsTheGeneratorsPathAtTheFeasibleSpeed) {
+  TrajectoryRequest request = csvRequest(circle(4.0), "circle_4_scaled.csv");
+  request.on_infeasible = OnInfeasible::kScale;
+  const Trajectory flown =
+      buildTrajectory(request, trajectory::TrajectoryParams(), paperLimits(), Vec3(1.5, 0, 1.5), 0.0, "e");
+  const double speed = velocity(flown.samples[3].x).norm();
+  EXPECT_GT(speed, 3.4);
+  EXPECT_LT(speed, 3.54);
+  trajectory::ClosedPathSpec spec;
+  spec.speed = speed;
+  spec.size = 1.5;
+  spec.center = Vec3(0.0, 0.0, 1.5);
+  for (size_t k = 0; k < flown.samples.size(); k += 17) {
+    const double t = flown.samples[k].t;
+    const trajectory::FlatReference exact = trajectory::flatToReference(trajectory::closedPathAt(spec, t), kGravity);
+    EXPECT_LT((flown.samples[k].x - exact.x).norm(), 1e-6) << "sample " << k;
+    EXPECT_LT((flown.samples[k].u - exact.u).norm(), 2e-3) << "sample " << k;
+  }
+}
+
+// The paper's ellipse asks for velocity steps its level attitude cannot fly: refused by default,
+// flown as given when the scenario says on_infeasible: fly (the paper's experiment III).
+TEST(TrajectoryCheck, ThePapersEllipseIsFlownOnlyWhenAskedTo) {
+  TrajectoryRequest request;
+  request.generator = "ellipse";
+  const std::string refused = refusalOf(request);
+  EXPECT_NE(refused.find("accel mismatch"), std::string::npos) << refused;
+  request.on_infeasible = OnInfeasible::kFly;
+  EXPECT_EQ(refusalOf(request), "accepted");
+}
+
+// The entry and the exit are part of the check: with transitions allowed 0.3 s at most, no entry
+// from the hover at the circle's start reaches its speed, and the path is refused for it.
+TEST(TrajectoryCheck, APathWithoutAFlyableEntryIsRefused) {
+  PathLimits limits = paperLimits();
+  limits.transition.max_duration = 0.3;
+  const std::string refused = refusalOf(csvRequest(circle(3.0), "circle_3.csv"), limits);
+  EXPECT_NE(refused.find("the way into or out of the path is beyond the vehicle"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("entry: none within 0.3 s"), std::string::npos) << refused;
+  limits.transition.enabled = false;
+  EXPECT_EQ(refusalOf(csvRequest(circle(3.0), "circle_3b.csv"), limits), "accepted") << "the old steps: unchecked";
+}
+
+}  // namespace
+}  // namespace sdlqr::mission

@@ -1,0 +1,277 @@
+#include "sdlqr/trajectory/transition.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <Eigen/LU>
+
+#include "sdlqr/math/quaternion.hpp"
+#include "sdlqr/trajectory/polynomial.hpp"
+
+namespace sdlqr::trajectory {
+
+namespace {
+
+using SepticCoefficients = Eigen::Matrix<double, 3, 8>;
+
+// The first duration tried, its growth, and the bisection steps after one was found flyable
+// (the duration to 0.1 %).
+constexpr double kFirstDuration = 0.25;  // [s]
+constexpr double kDurationStep = 1.25;   // each duration tried is this times the one before
+constexpr int kBisections = 8;  // within a step of 1.25: the duration to 0.1 %
+constexpr int kGridPoints = 200;
+
+// The end conditions of s^4..s^7 at s = 1: value, first, second and third derivative.
+const Eigen::Matrix4d& endMatrixInverse() {
+  static const Eigen::Matrix4d inverse = [] {
+    Eigen::Matrix4d m;
+    m << 1, 1, 1, 1,  //
+        4, 5, 6, 7,   //
+        12, 20, 30, 42,  //
+        24, 60, 120, 210;
+    return Eigen::Matrix4d(m.inverse());
+  }();
+  return inverse;
+}
+
+// The same for s^4..s^6 at s = 1, first to third derivative: a stop whose end position is free
+// (the natural condition of the least snap, the s^7 coefficient zero).
+const Eigen::Matrix3d& stopMatrixInverse() {
+  static const Eigen::Matrix3d inverse = [] {
+    Eigen::Matrix3d m;
+    m << 4, 5, 6,  //
+        12, 20, 30,  //
+        24, 60, 120;
+    return Eigen::Matrix3d(m.inverse());
+  }();
+  return inverse;
+}
+
+double wrapTransitionAngle(double angle) { return std::remainder(angle, 2.0 * M_PI); }
+
+
+}  // namespace
+
+TransitionParams::TransitionParams() { declaration().setDefaults(*this); }
+
+const ParamTable<TransitionParams>& TransitionParams::declaration() {
+  static const ParamTable<TransitionParams> table = [] {
+    using P = TransitionParams;
+    ParamTable<P> t("entry into and exit from a trajectory within the lqr limits (trajectory/transition.hpp)");
+    t.flag("enabled", &P::enabled, true, "false: a path starts at full speed, a GOTO off a path jumps (the old steps)");
+    t.number("max_duration", &P::max_duration, 20.0, "s", Range::openClosed(0.0, 120.0), "longest transition searched");
+    t.number("min_speed_limit", &P::min_speed_limit, 1.0, "m/s", Range::above(0.0),
+             "speed bound of a transition when both its ends are slower");
+    t.number("speed_margin", &P::speed_margin, 0.2, "-", Range::closed(0.0, 2.0),
+             "a transition may exceed the faster end's speed by this fraction");
+    t.number("input_fraction", &P::input_fraction, 0.8, "-", Range::openClosed(0.0, 1.0),
+             "a transition uses at most this fraction of lqr.omega_max and c_max (the feedback keeps the rest), "
+             "unless an end it joins needs more");
+    t.number("position_tolerance", &P::position_tolerance, 0.05, "m", Range::atLeast(0.0),
+             "a vehicle this close to a path's start ...");
+    t.number("velocity_tolerance", &P::velocity_tolerance, 0.1, "m/s", Range::atLeast(0.0),
+             "... moving this close to its start velocity ...");
+    t.number("acceleration_tolerance", &P::acceleration_tolerance, 0.5, "m/s^2", Range::atLeast(0.0),
+             "... and accelerating this close to its start acceleration flies the path with no entry");
+    return t;
+  }();
+  return table;
+}
+
+FlatState flatStateOf(const State& x, const Input& u, double thrust_rate, double gravity) {
+  const Quat q = orientation(x).normalized();
+  const Mat3 r = quat::rotationMatrix(q);
+  const double c = u[kThrust];
+  const Vec3 omega = bodyRate(u);
+  FlatState s;
+  s.position = position(x);
+  s.velocity = velocity(x);
+  s.acceleration = c * r.col(2) - Vec3(0.0, 0.0, gravity);
+  s.jerk = thrust_rate * r.col(2) + c * (omega.y() * r.col(0) - omega.x() * r.col(1));
+  s.yaw = quat::yaw(q);
+  return s;
+}
+
+FlatState flatStateAtStart(const Trajectory& trajectory, double gravity) {
+  const auto& samples = trajectory.samples;
+  double thrust_rate = 0.0;
+  if (samples.size() >= 2 && samples[1].t > samples[0].t) {
+    thrust_rate = (samples[1].u[kThrust] - samples[0].u[kThrust]) / (samples[1].t - samples[0].t);
+  }
+  return flatStateOf(samples.front().x, samples.front().u, thrust_rate, gravity);
+}
+
+void Transition::setStart(const FlatState& from, double duration) {
+  duration_ = duration;
+  const double T = duration;
+  coefficients_.col(0) = from.position;
+  coefficients_.col(1) = from.velocity * T;
+  coefficients_.col(2) = from.acceleration * (T * T / 2.0);
+  coefficients_.col(3) = from.jerk * (T * T * T / 6.0);
+  yaw_start_ = from.yaw;
+}
+
+// What s^0..s^3 leave of the end's derivatives of `order`, in normalized time.
+Vec3 Transition::startPart(int order) const {
+  Vec3 reached = Vec3::Zero();
+  for (int k = order; k < 4; ++k) reached += fallingFactorial(k, order) * coefficients_.col(k);
+  return reached;
+}
+
+Transition Transition::between(const FlatState& from, const FlatState& to, double duration) {
+  Transition out;
+  out.setStart(from, duration);
+  const double T = duration;
+  Eigen::Matrix<double, 4, 3> rest;
+  const Vec3 targets[4] = {to.position, to.velocity * T, to.acceleration * (T * T), to.jerk * (T * T * T)};
+  for (int order = 0; order < 4; ++order) rest.row(order) = (targets[order] - out.startPart(order)).transpose();
+  out.coefficients_.rightCols<4>() = (endMatrixInverse() * rest).transpose();
+  out.yaw_change_ = wrapTransitionAngle(to.yaw - from.yaw);
+  return out;
+}
+
+Transition Transition::stopping(const FlatState& from, double duration) {
+  Transition out;
+  out.setStart(from, duration);
+  Eigen::Matrix<double, 3, 3> rest;
+  for (int order = 1; order < 4; ++order) rest.row(order - 1) = -out.startPart(order).transpose();
+  out.coefficients_.middleCols<3>(4) = (stopMatrixInverse() * rest).transpose();
+  out.coefficients_.col(7).setZero();
+  out.yaw_change_ = 0.0;
+  return out;
+}
+
+FlatOutput Transition::at(double t) const {
+  const double T = duration_;
+  const double s = std::clamp(t / T, 0.0, 1.0);
+  double power[8];
+  power[0] = 1.0;
+  for (int k = 1; k < 8; ++k) power[k] = power[k - 1] * s;
+  Vec3 d[5] = {Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), Vec3::Zero()};
+  for (int order = 0; order < 5; ++order) {
+    for (int k = order; k < 8; ++k) d[order] += fallingFactorial(k, order) * power[k - order] * coefficients_.col(k);
+  }
+  FlatOutput f;
+  f.t = s * T;
+  f.position = d[0];
+  f.velocity = d[1] / T;
+  f.acceleration = d[2] / (T * T);
+  f.jerk = d[3] / (T * T * T);
+  f.snap = d[4] / (T * T * T * T);
+  const double blend = s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
+  const double blend_rate = 30.0 * s * s * (1.0 - s) * (1.0 - s);
+  f.yaw = yaw_start_ + yaw_change_ * blend;
+  f.yaw_rate = yaw_change_ * blend_rate / T;
+  return f;
+}
+
+FeasibilityReport checkFeasibility(const Transition& transition, const FeasibilityLimits& limits, double gravity) {
+  FeasibilityReport report;
+  for (int i = 0; i <= kGridPoints; ++i) {
+    const FlatOutput flat = transition.at(transition.duration() * static_cast<double>(i) / kGridPoints);
+    const FlatReference ref = flatToReference(flat, gravity);
+    accountSample(report, flat.velocity, ref.u);
+    if (ref.singular) report.min_thrust = std::min(report.min_thrust, 0.0);
+  }
+  judgeReport(report, limits);
+  return report;
+}
+
+namespace {
+
+// The thrust and body-rate norm a flat state asks for (flatness.hpp, heading held).
+Input inputsAt(const FlatState& s, double gravity) {
+  FlatOutput f;
+  f.velocity = s.velocity;
+  f.acceleration = s.acceleration;
+  f.jerk = s.jerk;
+  f.yaw = s.yaw;
+  return flatToReference(f, gravity).u;
+}
+
+// The lqr limits, of which a transition uses only `input_fraction` of omega_max and c_max unless an
+// end it joins needs more (a path flown at the limits); its speed as the params say.
+FeasibilityLimits transitionLimits(const FlatState& from, const FlatState& to, const LqrParams& lqr,
+                                   const TransitionParams& params) {
+  const double faster = std::max({from.velocity.norm(), to.velocity.norm(), params.min_speed_limit});
+  FeasibilityLimits limits = FeasibilityLimits::from(lqr, faster * (1.0 + params.speed_margin), 0.0);
+  const Input a = inputsAt(from, lqr.gravity), b = inputsAt(to, lqr.gravity);
+  constexpr double kEndSlack = 1.0 + 1e-9;  // an end exactly at the limit stays within it
+  limits.omega_max = std::min(lqr.omega_max, kEndSlack * std::max({params.input_fraction * lqr.omega_max,
+                                                                   bodyRate(a).norm(), bodyRate(b).norm()}));
+  limits.c_max = std::min(lqr.c_max, kEndSlack * std::max({params.input_fraction * lqr.c_max, a[kThrust], b[kThrust]}));
+  return limits;
+}
+
+// The stepping-then-bisection search for the shortest flyable duration; `make(T)` is the
+// transition of duration T.
+template <class Make>
+TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const LqrParams& lqr,
+                      const TransitionParams& params) {
+  TransitionPlan plan;
+  plan.limits = limits;
+  auto attempt = [&](double duration, TransitionPlan& into) {
+    into.transition = make(duration);
+    into.report = checkFeasibility(into.transition, plan.limits, lqr.gravity);
+    return into.report.feasible();
+  };
+  // Too short asks for too much thrust or rate; too long, when the ends move, for too much speed:
+  // the flyable durations are a window, stepped through finely enough not to jump over it.
+  double low = 0.0, high = std::min(kFirstDuration, params.max_duration);
+  while (!attempt(high, plan)) {
+    if (high >= params.max_duration) return plan;  // found stays false: the longest tried is reported
+    low = high;
+    high = std::min(kDurationStep * high, params.max_duration);
+  }
+  plan.found = true;
+  TransitionPlan trial = plan;
+  for (int i = 0; i < kBisections && low > 0.0; ++i) {
+    const double middle = 0.5 * (low + high);
+    if (attempt(middle, trial)) {
+      high = middle;
+      plan.transition = trial.transition;
+      plan.report = trial.report;
+    } else {
+      low = middle;
+    }
+  }
+  return plan;
+}
+
+}  // namespace
+
+TransitionPlan planTransition(const FlatState& from, const FlatState& to, const LqrParams& lqr,
+                              const TransitionParams& params) {
+  return search([&](double T) { return Transition::between(from, to, T); },
+                transitionLimits(from, to, lqr, params), lqr, params);
+}
+
+TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const TransitionParams& params) {
+  return search([&](double T) { return Transition::stopping(from, T); },
+                transitionLimits(from, FlatState{from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw}, lqr,
+                                 params),
+                lqr, params);
+}
+
+bool closeEnough(const FlatState& from, const FlatState& to, const TransitionParams& params) {
+  return (from.position - to.position).norm() <= params.position_tolerance &&
+         (from.velocity - to.velocity).norm() <= params.velocity_tolerance &&
+         (from.acceleration - to.acceleration).norm() <= params.acceleration_tolerance;
+}
+
+std::string describeTransition(const char* what, const TransitionPlan& plan) {
+  const FeasibilityReport& r = plan.report;
+  char text[256];
+  if (plan.found) {
+    std::snprintf(text, sizeof text, "%s %.3g s: thrust %.3g..%.3g m/s^2, max |omega| %.3g rad/s, max speed %.3g m/s",
+                  what, plan.transition.duration(), r.min_thrust, r.max_thrust, r.max_body_rate, r.max_speed);
+  } else {
+    std::snprintf(text, sizeof text, "%s: none within %.3g s (at the longest: thrust %.3g..%.3g m/s^2, max |omega| %.3g rad/s, max speed %.3g > %.3g m/s)",
+                  what, plan.transition.duration(), r.min_thrust, r.max_thrust, r.max_body_rate, r.max_speed,
+                  plan.limits.v_max);
+  }
+  return text;
+}
+
+}  // namespace sdlqr::trajectory
