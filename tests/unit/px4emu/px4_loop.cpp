@@ -22,7 +22,8 @@ Px4Loop::Px4Loop(const params::VehicleFile& config, const mission::Scenario& sce
       autopilot_end_({1, px4::kAutopilotComponent}, to_bridge_, &noSigningClock),
       controller_(config.lqr, config.controller, config.faults, config.validation),
       gains_(config.lqr, config.gains, config.faults, config.validation),
-      mission_(scenario_, config.trajectory, config.lqr, mission::MissionOptions{}),
+      mission_(scenario_, config.trajectory, {config.lqr, config.controller.guard, config.controller.transition},
+               mission::MissionOptions{}),
       bridge_(config.px4, config.lqr.gravity, config.validation, companion_end_),
       emulator_(emulatorConfig(config, scenario), scenario.sim, autopilot_end_) {}
 
