@@ -33,24 +33,41 @@ total=$(($(wc -l <"$work/single/flights.csv") - 1))
 waiter=$!
 
 # Task 2, killed once it has journaled a flight and before it finished its shard: SIGSTOP first,
-# so it cannot finish between the look and the kill.
+# so it cannot finish between the look and the kill. The watch starts no process (builtins, /proc
+# read by the shell, the pause a timed-out read): beside compilers a fork can wait seconds, long
+# enough for a task's 12 short flights to end (docs/verdicts.md).
 shard2="$work/slurm/slurm/shard-2"
+mkfifo "$work/nap.fifo"
+exec {nap}<>"$work/nap.fifo"
+journaled_rows() {  # sets rows: the flights in task 2's journal
+  local lines=()
+  rows=0
+  [ -f "$shard2/flights.partial.csv" ] && mapfile -t lines <"$shard2/flights.partial.csv" && rows=$((${#lines[@]} - 1))
+}
+find_task2_pid() {  # sets pid: the lowest process whose command line holds "--out $shard2 "
+  local proc arg line
+  pid=""
+  for proc in /proc/[0-9]*; do
+    line=""
+    { while IFS= read -r -d '' arg; do line+="$arg "; done <"$proc/cmdline"; } 2>/dev/null
+    case "$line" in *"--out $shard2 "*) pid="${proc#/proc/}"; return 0 ;; esac
+  done
+}
 killed=""
 for _ in $(seq 3000); do
   kill -0 "$waiter" 2>/dev/null || break
-  rows=0
-  [ -f "$shard2/flights.partial.csv" ] && rows=$(($(wc -l <"$shard2/flights.partial.csv") - 1))
+  journaled_rows
   if [ "$rows" -ge 1 ]; then
-    pid=$(pgrep -f -- "--out $shard2 " | head -n 1)
+    find_task2_pid
     [ -n "$pid" ] || fail "task 2 has journaled $rows flights but its sdlqr-batch is not running"
     kill -STOP "$pid"
     [ -f "$shard2/flights.csv" ] && { kill -CONT "$pid"; fail "task 2 finished its shard before it could be killed mid-run"; }
-    rows=$(($(wc -l <"$shard2/flights.partial.csv") - 1))
+    journaled_rows
     kill -KILL "$pid"
     killed="$rows"
     break
   fi
-  sleep 0.01
+  read -r -t 0.01 -u "$nap" _ || true
 done
 [ -n "$killed" ] || fail "task 2 never started flying (waiter: $(cat "$work/slurm.err"))"
 echo "killed task 2 (pid $pid) with $killed of its 12 flights journaled"
