@@ -1,7 +1,7 @@
 // During a flight (view_flight.sh flies it), watches sdlqr-view with every kind of client and
 // writes what each saw to WORK/observations.json for view_judge.mjs:
 //   - the page in headless Chromium: its scene state every 250 ms, a screenshot mid-flight, then
-//     after the flight (bus silent) when it first shows the stream stale;
+//     after the flight (bus silent) what it drew of the whole flight and when it shows the stream stale;
 //   - @foxglove/ws-protocol's client (an implementation nobody here wrote): every channel
 //     subscribed, the first messages of each decoded;
 //   - a client that subscribes to every channel and stops reading once the vehicle flies, and
@@ -134,15 +134,20 @@ observations.cpu = {
 };
 if (!screenshotTaken) await page.screenshot({ path: `${work}/view.png` });
 
-// After the flight: the bus is silent.
+// After the flight: the bus is silent. A page on a loaded machine draws seconds behind (10 s seen
+// beside a sanitizer build): it first draws what reached it, then shows the stream stale. Watched
+// until it shows STALE, or its message count has not moved for 3 s (never stale: a failure).
 const doneAtMs = Number(readFileSync(`${work}/flight.done`, 'utf8'));
 observations.afterFlight = { doneAtMs };
-for (const deadline = now() + 3000; now() < deadline;) {
+for (let count = -1, quietSinceMs = now(), deadline = now() + 60000; now() < deadline;) {
   const state = await pageState(page);
+  observations.afterFlight.state = state;  // the drained page: what it drew of the whole flight
   if (state.statusText.startsWith('STALE')) {  // what the page shows, not only what it computes
-    observations.afterFlight = { doneAtMs, staleSeenAtMs: now(), state };
+    observations.afterFlight.staleSeenAtMs = now();
     break;
   }
+  if (state.messages !== count) [count, quietSinceMs] = [state.messages, now()];
+  if (now() - quietSinceMs > 3000) break;
   await sleep(50);
 }
 observations.pageErrors = page.errors;

@@ -1,8 +1,10 @@
 #pragma once
-// Re-sends the mission's current setpoint command (the last TAKEOFF or GOTO) at a fixed interval
-// of simulation time, with its own seq and a fresh utime: a controller restarted mid-flight learns
-// the setpoint from it, and every running subscriber recognises the seq it has handled already.
-// LAND, DISARM and ARM end the re-sending: they are no setpoint to return to.
+// Re-sends the mission's current command (the last ARM, TAKEOFF, GOTO, LAND or DISARM) at a fixed
+// interval of simulation time, with its own seq and a fresh utime, until the next command: a
+// controller restarted mid-flight learns the setpoint from it, a lost datagram of a command sent
+// once (under loss a LAND missed by the controller never lands, missed by the recorder is a
+// flight the analyzer cannot judge) arrives a second later, and every running subscriber
+// recognises the seq it has handled already (the same instance never acts on a command twice).
 
 #include <cstdint>
 
@@ -18,8 +20,7 @@ class CommandResender {
   // Every COMMAND as published (stamped with its utime and seq).
   void sent(const Command& command) {
     current_ = command;
-    active_ = interval_utime_ > 0 &&
-              (command.command == CommandType::kTakeoff || command.command == CommandType::kGoto);
+    active_ = interval_utime_ > 0;
     last_utime_ = command.utime;
   }
 

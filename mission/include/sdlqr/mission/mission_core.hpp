@@ -29,7 +29,7 @@
 namespace sdlqr::mission {
 
 struct MissionOptions {
-  double resend_interval_s = 1.0;   // [s] of simulation time between re-sends of TAKEOFF/GOTO (0: never)
+  double resend_interval_s = 1.0;   // [s] of simulation time between re-sends of the current command (0: never)
   double no_clock_timeout_s = 10.0; // [s] of wall time without a newer clock: clockLost()
 };
 
