@@ -18,7 +18,6 @@ KERNELS = ("common/math/src/sda_kernel.hpp", "common/math/src/discretize.cpp", "
 PENDING = {
     ("tests/integration/bus/bus_wire_check.cpp", "main"),
     ("tests/unit/bus/node_signing_test.cpp", "TEST"),
-    ("trajectory/trajectory_main.cpp", "run"),
 }
 CONTAINERS = re.compile(r"\b(namespace|class|struct|union|enum|extern)\b")
 
