@@ -8,6 +8,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sdlqr/config/cli.hpp"
@@ -44,7 +45,7 @@ struct Options {
   std::vector<std::string> sources;
 };
 
-int run(int argc, const char* const* argv) {
+Options parseOptions(int argc, const char* const* argv) {
   Options o;
   ArgParser parser("sdlqr-trajectory",
                    "Generates a reference trajectory, writes it as CSV and reports its feasibility against the\n"
@@ -70,89 +71,119 @@ int run(int argc, const char* const* argv) {
       "  sdlqr-trajectory --check mine.csv --require-feasible\n"
       "exit codes: 0 done, 2 bad input or configuration, 3 infeasible with --require-feasible");
   parser.parseOrExit(argc, argv);
-
   if (!o.print_config && o.sources.size() + (o.check_path.empty() ? 0 : 1) != 1) {
     throw std::invalid_argument("give exactly one SOURCE or --check FILE (see --help)");
   }
+  return o;
+}
+
+// The lqr and trajectory sections: defaults, then --config, then --periodic and --dt.
+struct Sections {
   LqrParams lqr;
   TrajectoryParams params;
+};
+
+Sections loadSections(const Options& o) {
+  Sections s;
   if (!o.config_path.empty()) {
     const ConfigReader root = loadVehicleConfig(o.config_path);
-    lqr = LqrParams::load(root.child("lqr"));
-    params = TrajectoryParams::load(root.child("trajectory"));
+    s.lqr = LqrParams::load(root.child("lqr"));
+    s.params = TrajectoryParams::load(root.child("trajectory"));
   }
-  if (o.periodic) params.periodic = true;
+  if (o.periodic) s.params.periodic = true;
   if (!std::isnan(o.dt)) {
     if (!(o.dt > 0.0)) throw std::invalid_argument("--dt: must be > 0");
-    params.sample_dt = o.dt;
-    if (params.check_dt > o.dt) params.check_dt = o.dt;
+    s.params.sample_dt = o.dt;
+    if (s.params.check_dt > o.dt) s.params.check_dt = o.dt;
   }
-  if (o.print_config) {
-    printProcessConfig(std::cout, "sdlqr-trajectory", o.config_path,
-                       {printedSection("lqr", lqr), printedSection("trajectory", params)});
-    return 0;
-  }
-  const bool v_max_given = !std::isnan(o.v_max);
-  if (v_max_given && !(o.v_max > 0.0)) throw std::invalid_argument("--v-max: must be > 0");
+  return s;
+}
 
+// A sampled trajectory and its feasibility against the limits at its v_max.
+struct Generated {
   Trajectory trajectory;
   FeasibilityReport report;
   FeasibilityLimits limits;
-  std::string summary;
-  auto fromPolynomial = [&](const MinSnapTrajectory& polynomial, double v_max) {
-    limits = FeasibilityLimits::from(lqr, v_max, params.accel_mismatch_max);
-    report = checkFeasibility(polynomial, limits, lqr.gravity, params.check_dt);
-    trajectory = sampleTrajectory(polynomial, params.sample_dt, lqr.gravity);
-    char line[160];
-    std::snprintf(line, sizeof(line), "min-snap: %d segments, %.3f s, snap cost %.4g m^2/s^7%s\n",
-                  polynomial.segmentCount(), polynomial.duration(), polynomial.snapCost(),
-                  polynomial.periodic ? ", periodic" : ", rest to rest");
-    summary = line;
-  };
-  auto fromSamples = [&](double v_max) {
-    limits = FeasibilityLimits::from(lqr, v_max, params.accel_mismatch_max);
-    report = checkFeasibility(trajectory, limits, lqr.gravity);
-  };
+  std::string summary;  // the min-snap polynomial's line; empty for sampled sources
+};
 
+// A min-snap polynomial: feasibility checked on the polynomial itself, then sampled.
+Generated fromPolynomial(const MinSnapTrajectory& polynomial, double v_max, const Sections& s) {
+  Generated g;
+  g.limits = FeasibilityLimits::from(s.lqr, v_max, s.params.accel_mismatch_max);
+  g.report = checkFeasibility(polynomial, g.limits, s.lqr.gravity, s.params.check_dt);
+  g.trajectory = sampleTrajectory(polynomial, s.params.sample_dt, s.lqr.gravity);
+  char line[160];
+  std::snprintf(line, sizeof(line), "min-snap: %d segments, %.3f s, snap cost %.4g m^2/s^7%s\n",
+                polynomial.segmentCount(), polynomial.duration(), polynomial.snapCost(),
+                polynomial.periodic ? ", periodic" : ", rest to rest");
+  g.summary = line;
+  return g;
+}
+
+// Samples only (a CSV to check, the ellipse): feasibility checked on the samples.
+Generated fromSamples(Trajectory trajectory, double v_max, const Sections& s) {
+  Generated g;
+  g.trajectory = std::move(trajectory);
+  g.limits = FeasibilityLimits::from(s.lqr, v_max, s.params.accel_mismatch_max);
+  g.report = checkFeasibility(g.trajectory, g.limits, s.lqr.gravity);
+  return g;
+}
+
+// Min-snap through a waypoint file's points (.yaml/.yml or .csv); --v-max overrides the file's.
+Generated fromWaypointFile(const std::string& source, const Options& o, const Sections& s) {
+  WaypointSpec spec;
+  if (endsWith(source, ".csv")) spec.waypoints = readWaypointCsv(source);
+  else spec = loadWaypointYaml(source);
+  MinSnapOptions options;
+  options.v_max = !std::isnan(o.v_max) ? o.v_max : spec.v_max;
+  if (!(options.v_max > 0.0)) throw std::invalid_argument(source + ": no v_max: give it in the file or with --v-max");
+  options.periodic = spec.periodic || o.periodic;
+  options.yaw = s.params.yaw;
+  options.grid_dt = s.params.check_dt;
+  return fromPolynomial(generateMinSnap(spec.waypoints, options), options.v_max, s);
+}
+
+Generated generate(const Options& o, const Sections& s) {
   if (!o.check_path.empty()) {
-    trajectory = readTrajectoryCsv(o.check_path, params.sampleChecks());
-    fromSamples(v_max_given ? o.v_max : params.fast_v_max);
-  } else {
-    const std::string& source = o.sources.front();
-    if (source == "minsnap_fast") {
-      fromPolynomial(paperMinSnapFast(params), params.fast_v_max);
-    } else if (source == "minsnap_slow") {
-      fromPolynomial(paperMinSnapSlow(params), params.slow_v_max);
-    } else if (source == "ellipse") {
-      trajectory = paperEllipse(params, lqr.gravity);
-      fromSamples(params.ellipse_speed);
-    } else if (endsWith(source, ".yaml") || endsWith(source, ".yml") || endsWith(source, ".csv")) {
-      WaypointSpec spec;
-      if (endsWith(source, ".csv")) spec.waypoints = readWaypointCsv(source);
-      else spec = loadWaypointYaml(source);
-      MinSnapOptions options;
-      options.v_max = v_max_given ? o.v_max : spec.v_max;
-      if (!(options.v_max > 0.0)) throw std::invalid_argument(source + ": no v_max: give it in the file or with --v-max");
-      options.periodic = spec.periodic || o.periodic;
-      options.yaw = params.yaw;
-      options.grid_dt = params.check_dt;
-      fromPolynomial(generateMinSnap(spec.waypoints, options), options.v_max);
-    } else {
-      throw std::invalid_argument("unknown SOURCE '" + source + "' (see --help)");
-    }
+    return fromSamples(readTrajectoryCsv(o.check_path, s.params.sampleChecks()),
+                       !std::isnan(o.v_max) ? o.v_max : s.params.fast_v_max, s);
   }
-  if (o.temporal) trajectory.tracking = ReferenceMode::kTemporal;
+  const std::string& source = o.sources.front();
+  if (source == "minsnap_fast") return fromPolynomial(paperMinSnapFast(s.params), s.params.fast_v_max, s);
+  if (source == "minsnap_slow") return fromPolynomial(paperMinSnapSlow(s.params), s.params.slow_v_max, s);
+  if (source == "ellipse") return fromSamples(paperEllipse(s.params, s.lqr.gravity), s.params.ellipse_speed, s);
+  if (endsWith(source, ".yaml") || endsWith(source, ".yml") || endsWith(source, ".csv")) {
+    return fromWaypointFile(source, o, s);
+  }
+  throw std::invalid_argument("unknown SOURCE '" + source + "' (see --help)");
+}
 
-  // The report goes to stderr when the CSV goes to stdout.
+// The report goes to stderr when the CSV goes to stdout.
+void writeOutputs(const Options& o, const Generated& g) {
   std::ostream& info = o.output_path == "-" ? std::cerr : std::cout;
-  const auto& samples = trajectory.samples;
+  const auto& samples = g.trajectory.samples;
   char line[160];
   std::snprintf(line, sizeof(line), "%zu samples over %.3f s%s\n", samples.size(), samples.back().t - samples.front().t,
-                trajectory.closed ? ", closed" : "");
-  info << summary << line << formatReport(report, limits);
-  if (o.output_path == "-") writeTrajectoryCsv(std::cout, trajectory);
-  else if (!o.output_path.empty()) writeTrajectoryCsv(o.output_path, trajectory);
-  return o.require_feasible && !report.feasible() ? kExitInfeasible : 0;
+                g.trajectory.closed ? ", closed" : "");
+  info << g.summary << line << formatReport(g.report, g.limits);
+  if (o.output_path == "-") writeTrajectoryCsv(std::cout, g.trajectory);
+  else if (!o.output_path.empty()) writeTrajectoryCsv(o.output_path, g.trajectory);
+}
+
+int run(int argc, const char* const* argv) {
+  const Options o = parseOptions(argc, argv);
+  const Sections sections = loadSections(o);
+  if (o.print_config) {
+    printProcessConfig(std::cout, "sdlqr-trajectory", o.config_path,
+                       {printedSection("lqr", sections.lqr), printedSection("trajectory", sections.params)});
+    return 0;
+  }
+  if (!std::isnan(o.v_max) && !(o.v_max > 0.0)) throw std::invalid_argument("--v-max: must be > 0");
+  Generated generated = generate(o, sections);
+  if (o.temporal) generated.trajectory.tracking = ReferenceMode::kTemporal;
+  writeOutputs(o, generated);
+  return o.require_feasible && !generated.report.feasible() ? kExitInfeasible : 0;
 }
 
 }  // namespace

@@ -105,158 +105,222 @@ bool checkController(const logger::FlightLog& log, const std::string& text, cons
   return gap_ok && return_ok;
 }
 
+// Every option of the command line, with its default.
+struct Options {
+  std::string required_text, forbidden_text, vehicle;
+  double max_silence = 2.5;
+  bool require_complete = false;
+  std::string hover_text;
+  double max_hover_error = 0.1;
+  std::string expected_text, may_stop_text = joinList(faults::kProcessesThatMayStop), also_may_stop_text;
+  long long kernel_dropped = -1;
+  std::string gains_outage, estimator_outage, controller_outage, setpoint_text;
+  double fallback_timeout = 1.0, max_gains_resume = 0.25;
+  double max_failsafe_delay = 0.2, max_tilt = 30.0, max_touchdown_speed = 1.0;
+  double settle_until = 0.0, return_tolerance = 0.1, max_return = 3.0, max_gap_tilt = 10.0;
+  std::vector<std::string> positional;
+};
+
+// What every fault test may ask: counters, liveness, a hover and the kernel's drops.
+void addCounterOptions(ArgParser& parser, Options& o) {
+  parser.addOption("--require", &o.required_text, "A,B,...", "counters that must be > 0 in some process");
+  parser.addOption("--forbid", &o.forbidden_text, "A,B,...", "counters that must stay 0 in every process");
+  parser.addOption("--max-silence", &o.max_silence, "S",
+                   "longest heartbeat gap of any process, and longest silence before the end of the log,\n"
+                   "wall time (default 2.5)");
+  parser.addOption("--expect", &o.expected_text, "A,B,...", "processes that must have sent heartbeats");
+  parser.addOption("--may-stop", &o.may_stop_text, "A,B,...",
+                   "processes that may end before the log does, with a STOPPING heartbeat\n"
+                   "(default " + o.may_stop_text + ")");
+  parser.addOption("--also-may-stop", &o.also_may_stop_text, "A,B,...",
+                   "processes added to --may-stop's list (a test's own publisher, say)");
+  parser.addOption("--hover", &o.hover_text, "T0,T1,X,Y,Z",
+                   "max |truth - (X,Y,Z)| over simulation time [T0, T1] s must stay below --max-hover-error");
+  parser.addOption("--max-hover-error", &o.max_hover_error, "M", "default 0.1 m");
+  parser.addFlag("--complete", &o.require_complete, "fail unless the log ends in a whole event");
+  parser.addOption("--vehicle", &o.vehicle, "PREFIX", "channel prefix of the vehicle");
+  parser.addOption("--kernel-drops", &o.kernel_dropped, "N",
+                   "the datagrams a loss rule dropped in the kernel (scripts/packet_loss --dropped): must be > 0,\n"
+                   "match the log's gaps, and every subscriber must have counted them (kernel_loss.hpp)");
+}
+
+// A process killed and restarted by the test, and what its outage must look like.
+void addOutageOptions(ArgParser& parser, Options& o) {
+  parser.addOption("--gains-outage", &o.gains_outage, "KILL_US,RESTART_US",
+                   "sdlqr-gains killed/restarted at these wall instants (date +%s%6N): the hover K takes over\n"
+                   "after --fallback-timeout and fresh GAINS return within --max-gains-resume");
+  parser.addOption("--fallback-timeout", &o.fallback_timeout, "S", "controller.gains_fallback_s (default 1.0)");
+  parser.addOption("--max-gains-resume", &o.max_gains_resume, "S", "first GAINS after the restarted solver is up, default 0.25 s of\n"
+                   "simulation time (two 10 Hz solve periods and an estimate)");
+  parser.addOption("--estimator-outage", &o.estimator_outage, "KILL_US,RESTART_US",
+                   "sdlqr-estimator killed/restarted: the lowlevel failsafe engages within --max-failsafe-delay,\n"
+                   "tilt stays below --max-tilt, touchdown slower than --max-touchdown-speed, disarmed on the\n"
+                   "ground, and never armed again to the end of the log (the mission re-sends its TAKEOFF)");
+  parser.addOption("--max-failsafe-delay", &o.max_failsafe_delay, "S", "default 0.2 s of simulation time");
+  parser.addOption("--max-tilt", &o.max_tilt, "DEG", "default 30");
+  parser.addOption("--max-touchdown-speed", &o.max_touchdown_speed, "M_S", "default 1.0");
+  parser.addOption("--controller-outage", &o.controller_outage, "KILL_US,RESTART_US",
+                   "sdlqr-controller killed/restarted: the failsafe holds the vehicle level (tilt below\n"
+                   "--max-gap-tilt) and after the restart it is back within --return-tolerance of --setpoint\n"
+                   "within --max-return-time, staying there until --settle-until");
+  parser.addOption("--setpoint", &o.setpoint_text, "X,Y,Z", "held setpoint of --controller-outage [m]");
+  parser.addOption("--settle-until", &o.settle_until, "T", "simulation time [s] the return must last until");
+  parser.addOption("--return-tolerance", &o.return_tolerance, "M", "default 0.1 m");
+  parser.addOption("--max-return-time", &o.max_return, "S", "default 3 s of simulation time");
+  parser.addOption("--max-gap-tilt", &o.max_gap_tilt, "DEG", "default 10: level while the controller is away");
+}
+
+void parseOptions(int argc, char** argv, Options& o) {
+  ArgParser parser("sdlqr-faultcheck",
+                   "Reads a flight log and prints the rejection, watchdog and fault counters of every process.");
+  addCounterOptions(parser, o);
+  addOutageOptions(parser, o);
+  parser.setEpilog("exit codes: 0 every check passed, 1 a check failed, 2 bad option or unreadable log");
+  parser.allowPositional(&o.positional, "LOG");
+  parser.parseOrExit(argc, argv);
+  if (o.positional.size() != 1) throw std::invalid_argument("expected one LOG file");
+  // Bad outage options fail before the log is read.
+  if (!o.gains_outage.empty()) parseOutage("--gains-outage", o.gains_outage);
+  if (!o.estimator_outage.empty()) parseOutage("--estimator-outage", o.estimator_outage);
+  if (!o.controller_outage.empty()) parseOutage("--controller-outage", o.controller_outage);
+  if (!o.controller_outage.empty() && o.setpoint_text.empty()) {
+    throw std::invalid_argument("--controller-outage needs --setpoint");
+  }
+}
+
+// Each process's own last heartbeat: a forged one (the fuzz flight's) could report any counter.
+std::map<std::string, const logger::HeartbeatRecord*> lastHeartbeats(const logger::FlightLog& log,
+                                                                     const faults::Liveness& alive) {
+  std::map<std::string, const logger::HeartbeatRecord*> last;
+  for (const faults::ProcessLiveness& p : alive.processes) {
+    if (p.last_index >= 0) last[p.process] = &log.heartbeat[static_cast<size_t>(p.last_index)];
+  }
+  return last;
+}
+
+void printLogFile(const logger::FlightLog& log) {
+  std::cout << "log: " << log.file.events << " events, " << log.file.file_bytes << " bytes, "
+            << (log.file.complete() ? "complete" : "INCOMPLETE") << " (truncated tail " << log.file.truncated_tail_bytes
+            << " bytes, skipped " << log.file.skipped_bytes << " bytes)\n";
+}
+
+// Prints each process's counts and its non-zero fault counters; returns each counter summed over
+// the processes.
+std::map<std::string, int64_t> printCounters(const std::map<std::string, const logger::HeartbeatRecord*>& last) {
+  std::map<std::string, int64_t> totals;
+  for (const auto& [process, hb] : last) {
+    std::cout << process << ": rejected " << hb->rejected << ", dropped " << hb->dropped << ", errors " << hb->errors
+              << ", last heartbeat " << logger::processStateName(hb->state) << "\n";
+    for (const auto& [name, value] : hb->counters) {
+      totals[name] += value;
+      const bool interesting = name.rfind("reject.", 0) == 0 || name.rfind("watchdog.", 0) == 0 ||
+                               name.rfind("fault.", 0) == 0 || name.rfind("fuzz.", 0) == 0 ||
+                               name.rfind("failsafe.", 0) == 0 || name.rfind("mavlink.drop.", 0) == 0;
+      if (interesting && value != 0) std::cout << "    " << name << " " << value << "\n";
+    }
+  }
+  return totals;
+}
+
+faults::LivenessRules livenessRules(const Options& o) {
+  faults::LivenessRules liveness;
+  liveness.max_silence_s = o.max_silence;
+  liveness.expected = splitList(o.expected_text);
+  liveness.may_stop = splitList(o.may_stop_text);
+  for (const std::string& process : splitList(o.also_may_stop_text)) liveness.may_stop.push_back(process);
+  // A process killed on purpose is silent for its outage; restarted, it must beat to the end.
+  if (!o.gains_outage.empty()) liveness.killed.push_back("sdlqr-gains");
+  if (!o.estimator_outage.empty()) liveness.killed.push_back("sdlqr-estimator");
+  if (!o.controller_outage.empty()) liveness.killed.push_back("sdlqr-controller");
+  return liveness;
+}
+
+// --hover: the truth's distance to the setpoint over a time window; a crash anywhere fails it.
+bool checkHover(const logger::FlightLog& log, const std::string& hover_text, double max_hover_error) {
+  double v[5] = {};
+  if (std::sscanf(hover_text.c_str(), "%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4]) != 5) {
+    throw std::invalid_argument("--hover: expected T0,T1,X,Y,Z");
+  }
+  const Vec3 setpoint(v[2], v[3], v[4]);
+  double worst = 0.0, sum_sq = 0.0;
+  int64_t samples = 0;
+  bool crashed = false;
+  for (const SimTruth& truth : log.sim_truth.messages) {
+    const double t = 1e-6 * static_cast<double>(truth.utime);
+    crashed = crashed || truth.crashed;
+    if (t < v[0] || t > v[1]) continue;
+    const double error = (truth.position - setpoint).norm();
+    worst = std::max(worst, std::isfinite(error) ? error : 1e9);
+    sum_sq += error * error;
+    ++samples;
+  }
+  const double rms = samples > 0 ? std::sqrt(sum_sq / static_cast<double>(samples)) : 0.0;
+  const bool hover_ok = samples > 0 && worst < max_hover_error && !crashed;
+  std::cout << verdict(hover_ok) << " hover error over t=[" << v[0] << ", " << v[1] << "] s (" << samples
+            << " truth samples): max " << worst << " m, RMS " << rms << " m (limit " << max_hover_error << " m)"
+            << (crashed ? ", CRASHED" : "") << "\n";
+  return hover_ok;
+}
+
+// --require'd counters non-zero in some process, --forbid'den ones zero in all; prints each.
+bool checkCounters(const std::map<std::string, int64_t>& totals, const Options& o) {
+  const auto total = [&](const std::string& name) {
+    const auto it = totals.find(name);
+    return it == totals.end() ? int64_t{0} : it->second;
+  };
+  bool ok = true;
+  for (const std::string& name : splitList(o.required_text)) {
+    std::cout << (total(name) > 0 ? "ok   " : "FAIL ") << name << " = " << total(name) << " over all processes\n";
+    ok = ok && total(name) > 0;
+  }
+  for (const std::string& name : splitList(o.forbidden_text)) {
+    std::cout << (total(name) == 0 ? "ok   " : "FAIL ") << name << " = " << total(name)
+              << " over all processes (must stay 0)\n";
+    ok = ok && total(name) == 0;
+  }
+  return ok;
+}
+
+// The outages the test caused, each judged (every one runs and prints, whatever the others gave).
+bool checkOutages(const logger::FlightLog& log, const Options& o) {
+  bool ok = true;
+  if (!o.gains_outage.empty()) ok = checkGains(log, o.gains_outage, o.fallback_timeout, o.max_gains_resume) && ok;
+  if (!o.estimator_outage.empty()) {
+    ok = checkEstimator(log, o.estimator_outage, {o.max_failsafe_delay, o.max_tilt, o.max_touchdown_speed}) && ok;
+  }
+  if (!o.controller_outage.empty()) {
+    ok = checkController(log, o.controller_outage, o.setpoint_text, o.settle_until, o.return_tolerance, o.max_return,
+                         o.max_gap_tilt) && ok;
+  }
+  return ok;
+}
+
+int run(const Options& o) {
+  const logger::FlightLog log = logger::FlightLog::load(o.positional[0], o.vehicle);
+  const faults::Liveness alive = faults::measureLiveness(log);
+  const auto last = lastHeartbeats(log, alive);
+  bool ok = true;
+  printLogFile(log);
+  if (o.require_complete && !log.file.complete()) ok = false;
+  const std::map<std::string, int64_t> totals = printCounters(last);
+  if (alive.longest_machine_stall_s > 0.0) {
+    std::cout << "bus: the whole machine stalled, " << alive.longest_machine_stall_s << " s at most without any "
+              << "datagram (over " << faults::kMachineStallS << " s: not counted in any process's heartbeat gaps)\n";
+  }
+  ok = report(faults::judgeLiveness(alive, livenessRules(o))) && ok;
+  if (!o.hover_text.empty()) ok = checkHover(log, o.hover_text, o.max_hover_error) && ok;
+  if (o.kernel_dropped >= 0) ok = report(faults::judgeKernelLoss(log, alive, o.kernel_dropped)) && ok;
+  ok = checkCounters(totals, o) && ok;
+  ok = checkOutages(log, o) && ok;
+  return ok ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   return runMain("sdlqr-faultcheck", [&] {
-    std::string required_text, forbidden_text, vehicle;
-    double max_silence = 2.5;
-    bool require_complete = false;
-    std::string hover_text;
-    double max_hover_error = 0.1;
-    ArgParser parser("sdlqr-faultcheck",
-                     "Reads a flight log and prints the rejection, watchdog and fault counters of every process.");
-    parser.addOption("--require", &required_text, "A,B,...", "counters that must be > 0 in some process");
-    parser.addOption("--forbid", &forbidden_text, "A,B,...", "counters that must stay 0 in every process");
-    parser.addOption("--max-silence", &max_silence, "S",
-                     "longest heartbeat gap of any process, and longest silence before the end of the log,\n"
-                     "wall time (default 2.5)");
-    std::string expected_text, may_stop_text = joinList(faults::kProcessesThatMayStop), also_may_stop_text;
-    parser.addOption("--expect", &expected_text, "A,B,...", "processes that must have sent heartbeats");
-    parser.addOption("--may-stop", &may_stop_text, "A,B,...",
-                     "processes that may end before the log does, with a STOPPING heartbeat\n"
-                     "(default " + may_stop_text + ")");
-    parser.addOption("--also-may-stop", &also_may_stop_text, "A,B,...",
-                     "processes added to --may-stop's list (a test's own publisher, say)");
-    parser.addOption("--hover", &hover_text, "T0,T1,X,Y,Z",
-                     "max |truth - (X,Y,Z)| over simulation time [T0, T1] s must stay below --max-hover-error");
-    parser.addOption("--max-hover-error", &max_hover_error, "M", "default 0.1 m");
-    parser.addFlag("--complete", &require_complete, "fail unless the log ends in a whole event");
-    parser.addOption("--vehicle", &vehicle, "PREFIX", "channel prefix of the vehicle");
-    long long kernel_dropped = -1;
-    parser.addOption("--kernel-drops", &kernel_dropped, "N",
-                     "the datagrams a loss rule dropped in the kernel (scripts/packet_loss --dropped): must be > 0,\n"
-                     "match the log's gaps, and every subscriber must have counted them (kernel_loss.hpp)");
-    std::string gains_outage, estimator_outage, controller_outage, setpoint_text;
-    double fallback_timeout = 1.0, max_gains_resume = 0.25;
-    double max_failsafe_delay = 0.2, max_tilt = 30.0, max_touchdown_speed = 1.0;
-    double settle_until = 0.0, return_tolerance = 0.1, max_return = 3.0, max_gap_tilt = 10.0;
-    parser.addOption("--gains-outage", &gains_outage, "KILL_US,RESTART_US",
-                     "sdlqr-gains killed/restarted at these wall instants (date +%s%6N): the hover K takes over\n"
-                     "after --fallback-timeout and fresh GAINS return within --max-gains-resume");
-    parser.addOption("--fallback-timeout", &fallback_timeout, "S", "controller.gains_fallback_s (default 1.0)");
-    parser.addOption("--max-gains-resume", &max_gains_resume, "S", "first GAINS after the restarted solver is up, default 0.25 s of\n"
-                     "simulation time (two 10 Hz solve periods and an estimate)");
-    parser.addOption("--estimator-outage", &estimator_outage, "KILL_US,RESTART_US",
-                     "sdlqr-estimator killed/restarted: the lowlevel failsafe engages within --max-failsafe-delay,\n"
-                     "tilt stays below --max-tilt, touchdown slower than --max-touchdown-speed, disarmed on the\n"
-                     "ground, and never armed again to the end of the log (the mission re-sends its TAKEOFF)");
-    parser.addOption("--max-failsafe-delay", &max_failsafe_delay, "S", "default 0.2 s of simulation time");
-    parser.addOption("--max-tilt", &max_tilt, "DEG", "default 30");
-    parser.addOption("--max-touchdown-speed", &max_touchdown_speed, "M_S", "default 1.0");
-    parser.addOption("--controller-outage", &controller_outage, "KILL_US,RESTART_US",
-                     "sdlqr-controller killed/restarted: the failsafe holds the vehicle level (tilt below\n"
-                     "--max-gap-tilt) and after the restart it is back within --return-tolerance of --setpoint\n"
-                     "within --max-return-time, staying there until --settle-until");
-    parser.addOption("--setpoint", &setpoint_text, "X,Y,Z", "held setpoint of --controller-outage [m]");
-    parser.addOption("--settle-until", &settle_until, "T", "simulation time [s] the return must last until");
-    parser.addOption("--return-tolerance", &return_tolerance, "M", "default 0.1 m");
-    parser.addOption("--max-return-time", &max_return, "S", "default 3 s of simulation time");
-    parser.addOption("--max-gap-tilt", &max_gap_tilt, "DEG", "default 10: level while the controller is away");
-    parser.setEpilog("exit codes: 0 every check passed, 1 a check failed, 2 bad option or unreadable log");
-    std::vector<std::string> positional;
-    parser.allowPositional(&positional, "LOG");
-    parser.parseOrExit(argc, argv);
-    if (positional.size() != 1) throw std::invalid_argument("expected one LOG file");
-    // Bad outage options fail before the log is read.
-    if (!gains_outage.empty()) parseOutage("--gains-outage", gains_outage);
-    if (!estimator_outage.empty()) parseOutage("--estimator-outage", estimator_outage);
-    if (!controller_outage.empty()) parseOutage("--controller-outage", controller_outage);
-    if (!controller_outage.empty() && setpoint_text.empty()) throw std::invalid_argument("--controller-outage needs --setpoint");
-    const logger::FlightLog log = logger::FlightLog::load(positional[0], vehicle);
-
-    // Each process's own last heartbeat: a forged one (the fuzz flight's) could report any counter.
-    const faults::Liveness alive = faults::measureLiveness(log);
-    std::map<std::string, const logger::HeartbeatRecord*> last;
-    for (const faults::ProcessLiveness& p : alive.processes) {
-      if (p.last_index >= 0) last[p.process] = &log.heartbeat[static_cast<size_t>(p.last_index)];
-    }
-
-    bool ok = true;
-    std::cout << "log: " << log.file.events << " events, " << log.file.file_bytes << " bytes, "
-              << (log.file.complete() ? "complete" : "INCOMPLETE") << " (truncated tail " << log.file.truncated_tail_bytes
-              << " bytes, skipped " << log.file.skipped_bytes << " bytes)\n";
-    if (require_complete && !log.file.complete()) ok = false;
-    std::map<std::string, int64_t> totals;
-    for (const auto& [process, hb] : last) {
-      std::cout << process << ": rejected " << hb->rejected << ", dropped " << hb->dropped << ", errors " << hb->errors
-                << ", last heartbeat " << logger::processStateName(hb->state) << "\n";
-      for (const auto& [name, value] : hb->counters) {
-        totals[name] += value;
-        const bool interesting = name.rfind("reject.", 0) == 0 || name.rfind("watchdog.", 0) == 0 ||
-                                 name.rfind("fault.", 0) == 0 || name.rfind("fuzz.", 0) == 0 ||
-                                 name.rfind("failsafe.", 0) == 0 || name.rfind("mavlink.drop.", 0) == 0;
-        if (interesting && value != 0) std::cout << "    " << name << " " << value << "\n";
-      }
-    }
-    if (alive.longest_machine_stall_s > 0.0) {
-      std::cout << "bus: the whole machine stalled, " << alive.longest_machine_stall_s << " s at most without any "
-                << "datagram (over " << faults::kMachineStallS << " s: not counted in any process's heartbeat gaps)\n";
-    }
-    faults::LivenessRules liveness;
-    liveness.max_silence_s = max_silence;
-    liveness.expected = splitList(expected_text);
-    liveness.may_stop = splitList(may_stop_text);
-    for (const std::string& process : splitList(also_may_stop_text)) liveness.may_stop.push_back(process);
-    // A process killed on purpose is silent for its outage; restarted, it must beat to the end.
-    if (!gains_outage.empty()) liveness.killed.push_back("sdlqr-gains");
-    if (!estimator_outage.empty()) liveness.killed.push_back("sdlqr-estimator");
-    if (!controller_outage.empty()) liveness.killed.push_back("sdlqr-controller");
-    ok = report(faults::judgeLiveness(alive, liveness)) && ok;
-    if (!hover_text.empty()) {
-      double v[5] = {};
-      if (std::sscanf(hover_text.c_str(), "%lf,%lf,%lf,%lf,%lf", &v[0], &v[1], &v[2], &v[3], &v[4]) != 5) {
-        throw std::invalid_argument("--hover: expected T0,T1,X,Y,Z");
-      }
-      const Vec3 setpoint(v[2], v[3], v[4]);
-      double worst = 0.0, sum_sq = 0.0;
-      int64_t samples = 0;
-      bool crashed = false;
-      for (const SimTruth& truth : log.sim_truth.messages) {
-        const double t = 1e-6 * static_cast<double>(truth.utime);
-        crashed = crashed || truth.crashed;
-        if (t < v[0] || t > v[1]) continue;
-        const double error = (truth.position - setpoint).norm();
-        worst = std::max(worst, std::isfinite(error) ? error : 1e9);
-        sum_sq += error * error;
-        ++samples;
-      }
-      const double rms = samples > 0 ? std::sqrt(sum_sq / static_cast<double>(samples)) : 0.0;
-      const bool hover_ok = samples > 0 && worst < max_hover_error && !crashed;
-      std::cout << verdict(hover_ok) << " hover error over t=[" << v[0] << ", " << v[1] << "] s (" << samples
-                << " truth samples): max " << worst << " m, RMS " << rms << " m (limit " << max_hover_error << " m)"
-                << (crashed ? ", CRASHED" : "") << "\n";
-      ok = ok && hover_ok;
-    }
-    if (kernel_dropped >= 0) ok = report(faults::judgeKernelLoss(log, alive, kernel_dropped)) && ok;
-    for (const std::string& name : splitList(required_text)) {
-      const int64_t total = totals.count(name) ? totals[name] : 0;
-      std::cout << (total > 0 ? "ok   " : "FAIL ") << name << " = " << total << " over all processes\n";
-      ok = ok && total > 0;
-    }
-    for (const std::string& name : splitList(forbidden_text)) {
-      const int64_t total = totals.count(name) ? totals[name] : 0;
-      std::cout << (total == 0 ? "ok   " : "FAIL ") << name << " = " << total << " over all processes (must stay 0)\n";
-      ok = ok && total == 0;
-    }
-    if (!gains_outage.empty()) ok = checkGains(log, gains_outage, fallback_timeout, max_gains_resume) && ok;
-    if (!estimator_outage.empty()) {
-      ok = checkEstimator(log, estimator_outage, {max_failsafe_delay, max_tilt, max_touchdown_speed}) && ok;
-    }
-    if (!controller_outage.empty()) {
-      ok = checkController(log, controller_outage, setpoint_text, settle_until, return_tolerance, max_return,
-                           max_gap_tilt) && ok;
-    }
-    return ok ? 0 : 1;
+    Options options;
+    parseOptions(argc, argv, options);
+    return run(options);
   });
 }

@@ -82,9 +82,8 @@ CriterionSpec always(CriterionSpec c, double default_limit) {
   return c;
 }
 
-std::vector<CriterionSpec> makeCriteria() {
-  std::vector<CriterionSpec> c;
-  // Every flight.
+// Judged on every flight whether the scenario names them or not.
+void addAlwaysCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(always(flight("nonfinite_messages", B::kAtMost, "count", "messages with NaN or Inf (estimates, commands, gains)",
                             [](const FlightReport& r) { return static_cast<double>(r.nonfinite); }), 0.0));
   c.push_back(always(flight("crashed", B::kAtMost, "-", "vehicle crashed (1) or not (0)",
@@ -98,7 +97,10 @@ std::vector<CriterionSpec> makeCriteria() {
   event.scope = S::kEvent;
   event.of_event = [](const ExpectedEvent& e) { return e.found() ? 1.0 : 0.0; };
   c.push_back(always(event, 1.0));
-  // Setpoints and jumps (Fig. 5).
+}
+
+// Setpoints, jumps (Fig. 5) and pulls while holding a setpoint (Fig. 4).
+void addSetpointCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(setpoint("jump_settle_time", S::kJump, "s", "settle time: error below {jump_settle_error} and staying",
                        [](const SetpointWindow& w) { return w.settle_time; }));
   c.push_back(setpoint("jump_max_overshoot", S::kJump, "-", "overshoot along the jump, fraction of its size",
@@ -122,7 +124,10 @@ std::vector<CriterionSpec> makeCriteria() {
   pull_overshoot.description = "after release, travel past the setpoint, fraction of the pull's largest deviation";
   pull_overshoot.of_pull = [](const PullWindow& p) { return p.return_overshoot; };
   c.push_back(pull_overshoot);
-  // Estimator and rates (simulation time).
+}
+
+// Estimator and rates (simulation time), tilt, touchdown and saturation: figures of the whole flight.
+void addFlightCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(flight("estimator_position_rms", B::kAtMost, "m", "estimator position error RMS in hover",
                      [](const FlightReport& r) { return r.estimator.position_rms; }));
   c.push_back(flight("estimator_attitude_rms_deg", B::kAtMost, "deg", "estimator attitude error RMS in hover",
@@ -155,7 +160,10 @@ std::vector<CriterionSpec> makeCriteria() {
   c.push_back(flight("rotor_at_limit_max", B::kAtMost, "count",
                      "MOTOR_CMD (rate mode) with a rotor at the mixer's limit (min or max rotor thrust)",
                      [](const FlightReport& r) { return countOf(r.saturation.rotor_at_limit, r.saturation.motor_commands); }));
-  // Machine-dependent figures, judged only against this machine's calibration.
+}
+
+// Machine-dependent figures, judged only against this machine's calibration.
+void addRelativeCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(relative(flight("stack_cpu_relative_max", B::kAtMost, "-",
                               "flight-stack CPU over the CPU of a 1 kHz ping/pong on this bus (calibration)",
                               [](const FlightReport& r) { return r.stack_cpu_relative; })));
@@ -168,7 +176,10 @@ std::vector<CriterionSpec> makeCriteria() {
   c.push_back(relative(flight("rate_cmd_wall_jitter_relative_max", B::kAtMost, "-",
                               "RATE_CMD wall-clock period beyond its STATE_EST's, |jitter| median, over the calibration's one-way median",
                               [](const FlightReport& r) { return r.rate_cmd_wall_jitter_relative; })));
-  // Trajectories (path_tracking.hpp).
+}
+
+// Trajectories (path_tracking.hpp).
+void addTrajectoryCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(trajectory("path_error_rms", B::kAtMost, "m", "distance to the path, RMS",
                          [](const PathTrackingReport& t) { return t.path_error_rms; }));
   c.push_back(trajectory("path_error_max", B::kAtMost, "m", "distance to the path, max",
@@ -191,6 +202,16 @@ std::vector<CriterionSpec> makeCriteria() {
   path_return.scope = S::kTrajectoryPull;
   path_return.of_trajectory_pull = [](const PathPull& p) { return p.return_time; };
   c.push_back(path_return);
+}
+
+// The table's order is the order of the checks in every report.
+std::vector<CriterionSpec> makeCriteria() {
+  std::vector<CriterionSpec> c;
+  addAlwaysCriteria(c);
+  addSetpointCriteria(c);
+  addFlightCriteria(c);
+  addRelativeCriteria(c);
+  addTrajectoryCriteria(c);
   addRecoveryCriteria(c);
   return c;
 }
