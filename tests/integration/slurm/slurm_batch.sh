@@ -32,19 +32,22 @@ total=$(($(wc -l <"$work/single/flights.csv") - 1))
 "$batch" "$spec" --slurm --tasks 4 --out "$work/slurm" >"$work/slurm.out" 2>"$work/slurm.err" &
 waiter=$!
 
-# Task 2, killed once it has journaled a flight and before it finished its shard: SIGSTOP first,
-# so it cannot finish between the look and the kill. The watch starts no process (builtins, /proc
-# read by the shell, the pause a timed-out read): beside compilers a fork can wait seconds, long
-# enough for a task's 12 short flights to end (docs/verdicts.md).
+# Task 2, killed once it has journaled a flight and before it finished its shard. Found as soon as
+# its sdlqr-batch starts and held stopped from then on, it flies in 20 ms steps (SIGCONT, a pause,
+# SIGSTOP) until its journal holds a flight: a stalled watcher can no longer let the task fly on to
+# the end of its 12 short flights between a look at the journal and the kill (it did beside the
+# compilers of a clean clone). The watch starts no process (builtins, /proc read by the shell, the
+# pause a timed-out read): beside compilers a fork can wait seconds (docs/verdicts.md).
 shard2="$work/slurm/slurm/shard-2"
 mkfifo "$work/nap.fifo"
 exec {nap}<>"$work/nap.fifo"
+nap() { read -r -t "$1" -u "$nap" _ || true; }
 journaled_rows() {  # sets rows: the flights in task 2's journal
   local lines=()
   rows=0
   [ -f "$shard2/flights.partial.csv" ] && mapfile -t lines <"$shard2/flights.partial.csv" && rows=$((${#lines[@]} - 1))
 }
-find_task2_pid() {  # sets pid: the lowest process whose command line holds "--out $shard2 "
+find_task2_pid() {  # sets pid: the process whose command line holds "--out $shard2 "
   local proc arg line
   pid=""
   for proc in /proc/[0-9]*; do
@@ -53,23 +56,27 @@ find_task2_pid() {  # sets pid: the lowest process whose command line holds "--o
     case "$line" in *"--out $shard2 "*) pid="${proc#/proc/}"; return 0 ;; esac
   done
 }
-killed=""
+pid=""
 for _ in $(seq 3000); do
   kill -0 "$waiter" 2>/dev/null || break
-  journaled_rows
-  if [ "$rows" -ge 1 ]; then
-    find_task2_pid
-    [ -n "$pid" ] || fail "task 2 has journaled $rows flights but its sdlqr-batch is not running"
-    kill -STOP "$pid"
-    [ -f "$shard2/flights.csv" ] && { kill -CONT "$pid"; fail "task 2 finished its shard before it could be killed mid-run"; }
-    journaled_rows
-    kill -KILL "$pid"
-    killed="$rows"
-    break
-  fi
-  read -r -t 0.01 -u "$nap" _ || true
+  find_task2_pid
+  [ -n "$pid" ] && kill -STOP "$pid" 2>/dev/null && break
+  pid=""
+  nap 0.01
 done
-[ -n "$killed" ] || fail "task 2 never started flying (waiter: $(cat "$work/slurm.err"))"
+[ -n "$pid" ] || fail "task 2's sdlqr-batch never started (waiter: $(cat "$work/slurm.err"))"
+journaled_rows
+for _ in $(seq 3000); do
+  [ "$rows" -ge 1 ] && break
+  kill -CONT "$pid" 2>/dev/null || fail "task 2 (pid $pid) ended before it journaled a flight"
+  nap 0.02
+  kill -STOP "$pid" 2>/dev/null || fail "task 2 (pid $pid) ended after $rows journaled flights, before it could be killed"
+  journaled_rows
+done
+[ "$rows" -ge 1 ] || fail "task 2 (pid $pid) journaled no flight in 3000 steps"
+[ -f "$shard2/flights.csv" ] && { kill -CONT "$pid"; fail "task 2 finished its shard before it could be killed mid-run"; }
+kill -KILL "$pid"
+killed="$rows"
 echo "killed task 2 (pid $pid) with $killed of its 12 flights journaled"
 
 wait "$waiter" || fail "the Slurm batch failed: $(cat "$work/slurm.err")"
