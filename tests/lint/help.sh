@@ -5,6 +5,8 @@
 # start nothing, write nothing and answer in under 2 s.
 #   help.sh SCRIPT BIN_DIR WORK_DIR     prints "ok ..." or "FAIL <what>: <reason>" per check;
 #                                      exit 1 when one failed
+# HELP_ONLY=<regex> runs only the checks whose name matches it (help_test.sh's negatives: each
+# checks one or two names, not every command and executable again).
 # Reasons: "exit N", "no usage printed", "started PROGRAM" (a shim on PATH for the programs a
 # command runs to set up, build, test or fly), "wrote FILES" (beside the script, in the build
 # folders or the working folder), "took S s".
@@ -25,6 +27,7 @@ done
 check() {
   local name="$1" status=0 start end seconds files started
   shift
+  [ -z "${HELP_ONLY:-}" ] || grep -qE -- "$HELP_ONLY" <<<"$name" || return 0
   rm -rf "$run" "$work/started"/* && mkdir -p "$run/root" "$run/cwd"
   install -m 755 "$script" "$run/root/sdlqr"
   start=$(date +%s.%N)
