@@ -1,7 +1,8 @@
 # Sourced by flight tests that inject a fault (a kill, a restart, an attack, a signal): the fault
 # lands at an instant of the flight's own simulation clock, never at wall seconds after a launch.
-# A machine that stalls for seconds (the unit tests compiling beside the flights) stalls the
-# simulation with it, so a fault timed in wall seconds lands late in the flight, or after it.
+# A machine that stalls for seconds (seen when compilers ran beside the flights; `./sdlqr test` now
+# builds everything first, but a user's machine may be busy) stalls the simulation with it, so a
+# fault timed in wall seconds lands late in the flight, or after it.
 #
 #   sim_time_marks BUILD_DIR S1,S2,... [sdlqr-top options]   one waiter per flight, listening from now
 #   wait_sim_time S     returns once the flight's SIM_CLOCK has reached S (one of the marks, written
@@ -10,7 +11,7 @@
 #   stop_sim_time       ends the waiter (it ends by itself after its last mark)
 #   now_us VAR          sets VAR to the wall time in microseconds
 # Nothing between the mark and the fault starts a process: on this kind of machine (a VM whose
-# page faults are costly) a fork/exec waited up to 37 s beside the compilers (docs/verdicts.md).
+# page faults are costly) a fork/exec once waited 37 s beside compilers (docs/verdicts.md).
 #
 # The waiter is `sdlqr-top --at-sim-time` (tools/inspect/top_main.cpp), a process on the bus like
 # the launcher's own heartbeat waiter, under the same name, which sdlqr-faultcheck lets stop.
@@ -31,7 +32,7 @@ wait_sim_time() {
   return 1
 }
 
-# Wall time now [us], with no process started (a fork can take seconds beside the compilers).
+# Wall time now [us], with no process started (a fork can take seconds on a loaded machine).
 now_us() { printf -v "$1" '%s' "${EPOCHREALTIME/./}"; }
 
 stop_sim_time() {
