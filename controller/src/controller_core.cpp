@@ -21,7 +21,8 @@ ControllerCore::ControllerCore(const LqrParams& lqr, const ControllerParams& par
       gains_freshness_(health_.counters().add("watchdog.gains.freshness")),  // 0 fresh, 1 stale, 2 fallback
       guard_aborts_(health_.counters().add("trajectory.guard_abort")),
       transitions_(health_.counters().add("trajectory.transitions")),
-      entries_refused_(health_.counters().add("trajectory.entry_refused")) {}
+      entries_refused_(health_.counters().add("trajectory.entry_refused")),
+      trajectories_scaled_(health_.counters().add("trajectory.scaled")) {}
 
 RejectReason ControllerCore::onStateEstimate(const StateEstimate& estimate, Outbox& out) {
   const RejectReason reason = admitClock(estimate, limits_, state_clock_);
@@ -68,8 +69,17 @@ RejectReason ControllerCore::onCommand(const Command& command) {
 RejectReason ControllerCore::onTrajectory(const Trajectory& trajectory) {
   const RejectReason reason = validate(trajectory, limits_);
   if (health_.reject(Stream::kTrajectory, reason)) return reason;
+  const int64_t scaled_before = lqr_.references().trajectoriesScaled();
   const std::string refused = lqr_.setTrajectory(trajectory);
-  if (refused.empty()) return RejectReason::kNone;
+  if (refused.empty()) {
+    const ReferenceGenerator& references = lqr_.references();
+    health_.counters().set(trajectories_scaled_, references.trajectoriesScaled());
+    if (references.trajectoriesScaled() != scaled_before) {  // accepted, but slower than sent: say so
+      health_.setLastError("TRAJECTORY seq " + std::to_string(trajectory.seq) + " flown time-scaled: " +
+                           references.lastScaling());
+    }
+    return RejectReason::kNone;
+  }
   health_.reject(Stream::kTrajectory, RejectReason::kRefused);
   health_.setLastError("TRAJECTORY seq " + std::to_string(trajectory.seq) + " refused: " + refused);
   return RejectReason::kRefused;

@@ -48,6 +48,10 @@ const ParamTable<ControllerParams>& ControllerParams::declaration() {
     t.number("recovery_speed", &P::recovery_speed, 0.5, "m/s", Range::above(0.0),
              "... and moving at most this, the hold is set where the vehicle is");
     declareTracking(t, &P::tracking);  // in flight: every process that checks PARAMS knows it
+    t.choice("trajectory_beyond_limits", &P::trajectory_beyond_limits, UploadBeyondLimits::kRefuse,
+             {{"refuse", UploadBeyondLimits::kRefuse}, {"scale", UploadBeyondLimits::kScale}},
+             "an uploaded TRAJECTORY beyond the limits: refused with the report, or flown time-scaled to its "
+             "highest feasible speed (as a scenario's on_infeasible: scale)");
     t.section("guard", &P::guard);
     t.section("transition", &P::transition);
     t.number("switch_time_s", &P::switch_time_s, 0.5, "s", Range::closed(0.0, 5.0),

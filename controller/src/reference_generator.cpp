@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "sdlqr/math/quaternion.hpp"
+#include "sdlqr/trajectory/speed_fit.hpp"
 
 namespace sdlqr::controller {
 
@@ -49,7 +50,24 @@ std::string ReferenceGenerator::setTrajectory(const Trajectory& trajectory, int6
   const trajectory::FeasibilityLimits limits = trajectory::FeasibilityLimits::from(
       lqr_, params_.guard.max_speed, std::numeric_limits<double>::infinity());
   const trajectory::FeasibilityReport report = trajectory::checkFeasibility(trajectory, limits, gravity_);
-  if (!report.feasible()) return "beyond the vehicle:" + trajectory::describeViolations(report, limits);
+  if (report.feasible()) return loadTrajectory(trajectory, now_utime);
+  if (params_.trajectory_beyond_limits == UploadBeyondLimits::kScale) return loadScaled(trajectory, limits, now_utime);
+  return "beyond the vehicle:" + trajectory::describeViolations(report, limits);
+}
+
+std::string ReferenceGenerator::loadScaled(const Trajectory& trajectory, const trajectory::FeasibilityLimits& limits,
+                                           int64_t now_utime) {
+  const trajectory::SpeedFit fit = trajectory::fitSpeed(trajectory::givenPathAtSpeed(trajectory, gravity_),
+                                                        trajectory::peakSpeed(trajectory), limits, gravity_);
+  if (fit.feasible_speed <= 0.0) return trajectory::describeFit(fit, limits);
+  const std::string error = loadTrajectory(fit.trajectory, now_utime);
+  if (!error.empty()) return error;
+  ++trajectories_scaled_;
+  last_scaling_ = trajectory::describeFit(fit, limits);
+  return {};
+}
+
+std::string ReferenceGenerator::loadTrajectory(const Trajectory& trajectory, int64_t now_utime) {
   const int64_t start_utime = trajectory.start_utime > 0 ? trajectory.start_utime : now_utime;
   const std::string error = tracker_.load(trajectory, static_cast<double>(start_utime) * 1e-6);
   if (!error.empty()) return error;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <functional>
+#include <utility>
 
 #include "sdlqr/trajectory/closed_paths.hpp"
 #include "sdlqr/trajectory/paper_cases.hpp"
@@ -80,13 +81,9 @@ std::function<Trajectory(double)> pathGenerator(const TrajectoryRequest& request
                                                 const trajectory::TrajectoryParams& params, double gravity,
                                                 double& requested_speed) {
   if (isSpeedPath(request)) return speedPathGenerator(request, params, gravity, requested_speed);
-  const Trajectory as_given = sampledPath(request, params, gravity);
-  double peak = 0.0;
-  for (const TrajectorySample& s : as_given.samples) peak = std::max(peak, velocity(s.x).norm());
-  requested_speed = peak;
-  return [as_given, peak, gravity](double speed) {
-    return speed == peak || !(peak > 0.0) ? as_given : trajectory::timeScaled(as_given, speed / peak, gravity);
-  };
+  Trajectory as_given = sampledPath(request, params, gravity);
+  requested_speed = trajectory::peakSpeed(as_given);
+  return trajectory::givenPathAtSpeed(std::move(as_given), gravity);
 }
 
 std::string refusal(const trajectory::SpeedFit& fit, const trajectory::PathCheck& check) {

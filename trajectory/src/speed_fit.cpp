@@ -1,5 +1,6 @@
 #include "sdlqr/trajectory/speed_fit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -56,6 +57,19 @@ Trajectory timeScaled(const Trajectory& trajectory, double factor, double gravit
     out.samples[k].u = ref.u;
   }
   return out;
+}
+
+double peakSpeed(const Trajectory& trajectory) {
+  double peak = 0.0;
+  for (const TrajectorySample& s : trajectory.samples) peak = std::max(peak, velocity(s.x).norm());
+  return peak;
+}
+
+std::function<Trajectory(double)> givenPathAtSpeed(Trajectory as_given, double gravity) {
+  const double peak = peakSpeed(as_given);
+  return [as_given = std::move(as_given), peak, gravity](double speed) {
+    return speed == peak || !(peak > 0.0) ? as_given : timeScaled(as_given, speed / peak, gravity);
+  };
 }
 
 std::string describeFit(const SpeedFit& fit, const FeasibilityLimits& limits) {

@@ -3,10 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/reference_generator.hpp"
 #include "controller_test_commands.hpp"
 #include "sdlqr/math/model.hpp"
+#include "sdlqr/trajectory/closed_paths.hpp"
+#include "sdlqr/trajectory/speed_fit.hpp"
 
 namespace sdlqr::controller {
 namespace {
@@ -261,6 +265,45 @@ TEST(ReferenceGenerator, APathBeyondTheLimitsIsRefusedWithTheReport) {
   const std::string why = gen.setTrajectory(traj, 10000);
   EXPECT_NE(why.find("max thrust 30 > 18"), std::string::npos) << why;
   EXPECT_EQ(gen.phase(), FlightPhase::kHold);
+}
+
+// A 1.5 m circle at 4 m/s, as a generator samples it: beyond the paper's vehicle (||omega|| above 2
+// rad/s; feasible up to about 3.5 m/s).
+Trajectory fastCircle() {
+  trajectory::ClosedPathSpec circle;
+  circle.size = 1.5;
+  circle.speed = 4.0;
+  return trajectory::sampleClosedPath(circle, kDefaultGravity);
+}
+
+// GIVEN trajectory_beyond_limits: scale WHEN a TRAJECTORY beyond the limits arrives THEN it is flown
+// time-scaled to its highest feasible speed, within the limits, and the fit is said.
+TEST(ReferenceGenerator, APathBeyondTheLimitsIsFlownTimeScaledWhenTheVehicleFileSaysScale) {
+  ControllerParams params;
+  params.trajectory_beyond_limits = UploadBeyondLimits::kScale;
+  ReferenceGenerator gen = hoveringAt(Vec3(0, 0, 1), params);
+  ASSERT_EQ(gen.setTrajectory(fastCircle(), 10000), "");
+  EXPECT_EQ(gen.phase(), FlightPhase::kTrajectory);
+  EXPECT_EQ(gen.trajectoriesScaled(), 1);
+  EXPECT_NE(gen.lastScaling().find("at 4 m/s the path is beyond the vehicle"), std::string::npos) << gen.lastScaling();
+  const Trajectory& flown = gen.tracker().trajectory();
+  const double peak = trajectory::peakSpeed(flown);
+  EXPECT_GT(peak, 3.0);
+  EXPECT_LT(peak, 4.0);
+  LqrParams lqr;
+  lqr.gravity = kDefaultGravity;
+  const auto limits = trajectory::FeasibilityLimits::from(lqr, params.guard.max_speed, std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(trajectory::checkFeasibility(flown, limits, kDefaultGravity).feasible());
+  EXPECT_FALSE(trajectory::checkFeasibility(fastCircle(), limits, kDefaultGravity).feasible());
+}
+
+// Negative: by default (refuse) the same upload is refused with the report, nothing scaled.
+TEST(ReferenceGenerator, APathBeyondTheLimitsIsRefusedByDefault) {
+  ReferenceGenerator gen = hoveringAt(Vec3(0, 0, 1));
+  const std::string why = gen.setTrajectory(fastCircle(), 10000);
+  EXPECT_NE(why.find("beyond the vehicle"), std::string::npos) << why;
+  EXPECT_EQ(gen.phase(), FlightPhase::kHold);
+  EXPECT_EQ(gen.trajectoriesScaled(), 0);
 }
 
 // GIVEN the vehicle tilted 80 degrees while tracking WHEN the guard sees it THEN the trajectory is

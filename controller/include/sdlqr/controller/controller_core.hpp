@@ -72,7 +72,7 @@ class ControllerCore {
   double wall_now_s_ = 0.0;
   StateDependentLqr::Tick tick_;
   Counters::Id ticks_, fallback_ticks_, stale_ticks_, saturated_ticks_, gains_freshness_, guard_aborts_,
-      transitions_, entries_refused_;
+      transitions_, entries_refused_, trajectories_scaled_;
 };
 
 }  // namespace sdlqr::controller

@@ -10,6 +10,9 @@
 
 namespace sdlqr::controller {
 
+// What the controller does with an uploaded TRAJECTORY whose samples ask beyond the vehicle.
+enum class UploadBeyondLimits { kRefuse, kScale };
+
 // Each member is declared once (key, unit, default, range, help) in ControllerParams::declaration()
 // (controller_params.cpp); the default constructor takes the defaults from there.
 struct ControllerParams {
@@ -33,6 +36,7 @@ struct ControllerParams {
   double recovery_tilt_deg;
   double recovery_speed;
   ReferenceMode tracking;  // for trajectories that do not say
+  UploadBeyondLimits trajectory_beyond_limits;  // refused with the report, or flown time-scaled
   trajectory::TrajectoryGuardParams guard;  // aborts a trajectory that flies the vehicle away
   trajectory::TransitionParams transition;  // entry into and exit from a trajectory
   // The law itself is lqr.law (the gain solver needs it too); these belong to the controller alone.

@@ -24,6 +24,7 @@
 #include "sdlqr/messages/messages.hpp"
 #include "sdlqr/controller/controller_params.hpp"
 #include "sdlqr/controller/transition_reference.hpp"
+#include "sdlqr/trajectory/feasibility.hpp"
 #include "sdlqr/trajectory/tracking.hpp"
 
 namespace sdlqr::controller {
@@ -40,7 +41,9 @@ class ReferenceGenerator {
   void handleCommand(const Command& command);
   // Starts tracking a trajectory (copied once here, never in the 100 Hz path) if flying and its
   // samples are within the limits (thrust in [c_min, c_max], ||omega|| <= omega_max, speed within
-  // the guard's, trajectory/feasibility.hpp). Returns an empty string when accepted, else why not.
+  // the guard's, trajectory/feasibility.hpp), or, beyond them with trajectory_beyond_limits: scale,
+  // time-scaled to its highest feasible speed (trajectory/speed_fit.hpp; the bisection runs here, on
+  // receipt). Returns an empty string when accepted, else why not.
   std::string setTrajectory(const Trajectory& trajectory, int64_t now_utime);
   // Switches spatial <-> temporal tracking without losing the place (PARAMS tracking field).
   bool setTrackingMode(ReferenceMode mode, int64_t now_utime);
@@ -64,9 +67,15 @@ class ReferenceGenerator {
   // Transitions planned (entries and exits), and trajectories refused for want of a flyable entry.
   int64_t transitions() const { return transitions_; }
   int64_t entriesRefused() const { return entries_refused_; }
+  // Uploads flown time-scaled, and the last one's fit ("at 4 m/s the path is beyond ...; feasible up to 3.5 m/s").
+  int64_t trajectoriesScaled() const { return trajectories_scaled_; }
+  const std::string& lastScaling() const { return last_scaling_; }
   const TransitionReference& transition() const { return transition_; }
 
  private:
+  std::string loadTrajectory(const Trajectory& trajectory, int64_t now_utime);
+  std::string loadScaled(const Trajectory& trajectory, const trajectory::FeasibilityLimits& limits,
+                         int64_t now_utime);
   void startTakeoff(const StateEstimate& estimate, double height);
   void hold(const Vec3& position, double yaw);
   bool landedAt(const StateEstimate& estimate);
@@ -114,6 +123,8 @@ class ReferenceGenerator {
   Vec3 last_estimate_velocity_ = Vec3::Zero();
   int64_t transitions_ = 0;
   int64_t entries_refused_ = 0;
+  int64_t trajectories_scaled_ = 0;
+  std::string last_scaling_;
 };
 
 }  // namespace sdlqr::controller

@@ -30,6 +30,13 @@ SpeedFit fitSpeed(const std::function<Trajectory(double)>& generate, double requ
 // one (the paper's ellipse) keeps its attitudes, which never matched its motion.
 Trajectory timeScaled(const Trajectory& trajectory, double factor, double gravity);
 
+// The highest speed of a trajectory's samples [m/s].
+double peakSpeed(const Trajectory& trajectory);
+
+// A path given as samples (a CSV file, an uploaded TRAJECTORY, the paper's paths) as a generator for
+// fitSpeed: at its own peak speed it is returned as given, at another time-scaled (timeScaled).
+std::function<Trajectory(double)> givenPathAtSpeed(Trajectory as_given, double gravity);
+
 // One line: "at 3 m/s the path is beyond the vehicle: max |omega| 2.61 > 2 rad/s; feasible up to 2.41 m/s".
 std::string describeFit(const SpeedFit& fit, const FeasibilityLimits& limits);
 
