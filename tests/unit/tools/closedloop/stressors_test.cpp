@@ -5,9 +5,11 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/closedloop/closed_loop.hpp"
+#include "sdlqr/trajectory/closed_paths.hpp"
 #include "test_paths.hpp"
 #include "closedloop_test_scenarios.hpp"
 
@@ -258,6 +260,57 @@ TEST(Stressors, GuardAbortsARunawayTrajectoryIntoAHold) {
             << " m from it\n";
   EXPECT_LT(farthest, 2.0);
   EXPECT_FALSE(report.crashed);
+}
+
+// A foreign TRAJECTORY beyond the vehicle (a 1.5 m circle at 4 m/s, ||omega|| above 2 rad/s) sent
+// to the hovering stack: refused on arrival by default; with controller.trajectory_beyond_limits:
+// scale, flown time-scaled — counted, said in the controller's last error, no guard abort, no crash.
+struct UploadOutcome {
+  int64_t refused = 0, scaled = 0, guard_aborts = 0;
+  std::string last_error;
+  bool crashed = true;
+};
+
+UploadOutcome uploadFastCircle(controller::UploadBeyondLimits policy) {
+  mission::Scenario hover = scenarioNamed("hover_steady");
+  hover.duration = 20.0;
+  closedloop::StackConfig config = closedloop::StackConfig::load(hover.vehicle_path);
+  config.controller.trajectory_beyond_limits = policy;
+  closedloop::ClosedLoop loop(config, hover);
+  while (loop.utime() < 8'000'000) loop.step();
+  trajectory::ClosedPathSpec circle;
+  circle.center = loop.log().sim_truth.messages.back().position - Vec3(1.5, 0, 0);  // the vehicle on the circle
+  circle.size = 1.5;
+  circle.speed = 4.0;
+  Trajectory upload = trajectory::sampleClosedPath(circle, kDefaultGravity);
+  upload.utime = loop.utime();
+  upload.seq = 0;
+  upload.tracking = ReferenceMode::kTemporal;
+  loop.inject(upload);
+  loop.run();
+  const ProcessHealth& health = loop.controller().health();
+  UploadOutcome out;
+  out.refused = health.rejections(Stream::kTrajectory, RejectReason::kRefused);
+  out.scaled = health.counters().value(health.counters().find("trajectory.scaled"));
+  out.guard_aborts = health.counters().value(health.counters().find("trajectory.guard_abort"));
+  out.last_error = health.lastError();
+  out.crashed = analysis::analyzeFlight(loop.log(), hover).crashed;
+  return out;
+}
+
+TEST(Stressors, AnUploadBeyondTheVehicleIsFlownTimeScaledWhereTheVehicleFileSaysScale) {
+  const UploadOutcome scaled = uploadFastCircle(controller::UploadBeyondLimits::kScale);
+  std::cout << "scaled: " << scaled.last_error << "\n";
+  EXPECT_EQ(scaled.refused, 0);
+  EXPECT_EQ(scaled.scaled, 1);
+  EXPECT_NE(scaled.last_error.find("flown time-scaled: at 4 m/s the path is beyond the vehicle"), std::string::npos);
+  EXPECT_EQ(scaled.guard_aborts, 0);
+  EXPECT_FALSE(scaled.crashed);
+  // Negative: the default refuses it with the report, and nothing is scaled.
+  const UploadOutcome refused = uploadFastCircle(controller::UploadBeyondLimits::kRefuse);
+  EXPECT_EQ(refused.refused, 1);
+  EXPECT_EQ(refused.scaled, 0);
+  EXPECT_NE(refused.last_error.find("refused: beyond the vehicle"), std::string::npos) << refused.last_error;
 }
 
 // An infeasible path is refused when the scenario is loaded, with the report in one line naming
