@@ -4,6 +4,8 @@
 #include <cmath>
 #include <iostream>
 
+#include "sdlqr/math/model.hpp"
+#include "sdlqr/sim/rotors.hpp"
 #include "sim_test_support.hpp"
 
 namespace sdlqr::sim {
@@ -182,6 +184,25 @@ TEST(Physics, RotorDragDeceleratesAtTheConfiguredRate) {
   EXPECT_NEAR(sim.body().velocity.x(), 2.0 * decay, 1e-8);
   EXPECT_NEAR(sim.body().velocity.y(), -1.0 * decay, 1e-8);
   EXPECT_NEAR(sim.body().position.z(), 10.0, 1e-9);
+}
+
+// The controllers' model of the drag (math/model.hpp rotorDragAcceleration, lqr.model_rotor_drag) is
+// the plant's: at equal rotor thrusts the wrench's force per mass is c z_b plus exactly that term.
+TEST(Physics, TheModelsRotorDragIsThePlants) {
+  VehicleParams v;
+  v.rotor_drag = Vec3(0.69, 0.69, 1.34);
+  const RotorWrench wrench(v, 9.81);
+  RotorDrag model;
+  model.coefficients = v.rotor_drag;
+  model.gravity = 9.81;
+  for (double c : {3.0, 9.81, 25.0}) {
+    BodyState s;
+    s.orientation = quat::exp(Vec3(0.4, -0.3, 1.1));
+    s.velocity = Vec3(6.0, -3.0, 2.0);
+    const Wrench w = wrench(Vec4::Constant(v.mass * c / 4.0), s);
+    const Vec3 expected = c * quat::bodyZ(s.orientation) + rotorDragAcceleration(s.orientation, s.velocity, c, model);
+    EXPECT_LT((w.force_world / v.mass - expected).norm(), 1e-12) << "c " << c;
+  }
 }
 
 TEST(Physics, DisturbanceForceMovesTheVehicleForItsDurationOnly) {

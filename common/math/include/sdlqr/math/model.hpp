@@ -12,8 +12,24 @@ namespace sdlqr {
 
 inline constexpr double kDefaultGravity = 9.81;  // [m/s^2]
 
-// x_dot = f(x, u). The quaternion of x must be non-zero.
-State dynamics(const State& x, const Input& u, double gravity = kDefaultGravity);
+// Linear rotor drag as the plant applies it (sim/src/rotors.cpp): the mass-normalized force
+// -s R D R^T v, D = diag(coefficients) per body axis, s = sqrt(c / g) the rotor speed over its hover
+// speed (the plant's mean of sqrt(T_i / T_hover) at equal rotor thrusts; 0 at c <= 0). Zero
+// coefficients (the default): the paper's model, whose every result stays bit for bit.
+struct RotorDrag {
+  Vec3 coefficients = Vec3::Zero();  // [1/s] mass-normalized, body x, y, z
+  double gravity = kDefaultGravity;  // [m/s^2] the coefficients hold at hover thrust c = g
+  bool active() const { return (coefficients.array() != 0.0).any(); }
+  // s(c) and ds/dc.
+  double rotorSpeedRatio(double thrust) const;
+  double rotorSpeedRatioSlope(double thrust) const;
+};
+
+// -s(c) R D R^T v [m/s^2] for the unit quaternion q_unit, world velocity v and thrust c.
+Vec3 rotorDragAcceleration(const Quat& q_unit, const Vec3& velocity, double thrust, const RotorDrag& drag);
+
+// x_dot = f(x, u), with the rotor drag when given. The quaternion of x must be non-zero.
+State dynamics(const State& x, const Input& u, double gravity = kDefaultGravity, const RotorDrag& drag = {});
 
 struct Linearization {
   StateMatrix A;  // df/dx at (x, u), eq. (16)
@@ -24,7 +40,9 @@ struct Linearization {
 // thrust_gain theta: the model's produced over commanded thrust (v_dot = g + theta c R e_z; 1 in the
 // paper). u's thrust is then the one produced (theta c), so A does not change with theta and B's
 // thrust column is theta times the paper's.
-Linearization linearize(const State& x, const Input& u, double thrust_gain = 1.0);
+// drag: the rotor drag's terms (A's velocity and attitude columns, B's thrust column through s(c));
+// none adds nothing to the paper's Jacobians.
+Linearization linearize(const State& x, const Input& u, double thrust_gain = 1.0, const RotorDrag& drag = {});
 
 // d(q / ||q||)/dq, eq. (18).
 Mat4 unitProjectionJacobian(const Quat& q);
