@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
         "In: STATE_EST, GAINS, TRAJECTORY, PARAMS, COMMAND.  Out: RATE_CMD, REFERENCE, HEARTBEAT.");
 
     const ConfigReader config = loadVehicleConfig(options.config_path);
-    const LqrParams lqr = LqrParams::load(config.child("lqr"));
+    const LqrParams lqr = LqrParams::loadWithVehicle(config);
     const auto params = controller::ControllerParams::load(config.child("controller"));
     const FaultParams faults = FaultParams::load(config.child("faults"));
     const ValidationLimits limits = ValidationLimits::load(config.child("validation"));

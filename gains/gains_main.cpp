@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
     parser.setEpilog(gains::kOnceEpilog);
     parser.parseOrExit(argc, argv);
     const ConfigReader config = loadVehicleConfig(options.config_path);
-    const LqrParams lqr = gains::lqrParamsWithMethod(config.child("lqr"), once);
+    const LqrParams lqr = gains::lqrParamsWithMethod(config, once);
     if (once.once && options.print_config) {
       printProcessConfig(std::cout, "sdlqr-gains --once", options.config_path, {printedSection("lqr", lqr)});
       return 0;

@@ -54,7 +54,7 @@ RejectReason ControllerCore::onGains(const GainSet& gains) {
   RejectReason reason = validate(gains, limits_);
   if (reason == RejectReason::kNone) reason = gains_time_.check(gains.utime, state_clock_.now());
   // Last: the eigenvalues cost ~10 us, spent only on a K that passed the cheap checks.
-  if (reason == RejectReason::kNone) reason = validateClosedLoop(gains);
+  if (reason == RejectReason::kNone) reason = validateClosedLoop(gains, lqr_.modelRotorDrag());
   if (health_.reject(Stream::kGains, reason)) return reason;
   gains_time_.accept(gains.utime);
   lqr_.setGains(gains);

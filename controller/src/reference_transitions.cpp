@@ -2,6 +2,7 @@
 // path, tracking it under the guard, and the exit to a hover.
 #include "sdlqr/controller/reference_generator.hpp"
 
+#include "sdlqr/controller/drag_feedforward.hpp"
 #include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::controller {
@@ -12,8 +13,12 @@ double secondsOf(int64_t utime) { return static_cast<double>(utime) * 1e-6; }
 
 }  // namespace
 
-bool ReferenceGenerator::guardTrips(const StateEstimate& estimate, const State& reference) {
-  const trajectory::GuardTrip trip = trajectory::checkGuard(params_.guard, estimate.state(), reference);
+bool ReferenceGenerator::guardTrips(const StateEstimate& estimate, const State& reference, const Input& input) {
+  // The attitude the law is asked to fly: with the model's rotor drag, the reference's remapped.
+  State flown = reference;
+  Input flown_input = input;
+  compensateRotorDrag(flown, flown_input, gravity_, lqr_.rotorDrag());
+  const trajectory::GuardTrip trip = trajectory::checkGuard(params_.guard, estimate.state(), flown);
   if (trip == trajectory::GuardTrip::kNone) return false;
   ++guard_aborts_;
   last_guard_trip_ = trip;
@@ -85,11 +90,11 @@ bool ReferenceGenerator::trackTrajectory(const StateEstimate& estimate, Referenc
     State x;
     Input u;
     transition_.reference(now, x, u);
-    if (guardTrips(estimate, x)) return update(estimate, out);
+    if (guardTrips(estimate, x, u)) return update(estimate, out);
     emit(out, x, u, ReferenceMode::kTransition, 0, 0.0, trajectory_seq_);
   } else {
     const trajectory::TrackingOutput& tracked = tracker_.update(now, estimate.position);
-    if (guardTrips(estimate, tracked.x)) return update(estimate, out);
+    if (guardTrips(estimate, tracked.x, tracked.u)) return update(estimate, out);
     emit(out, tracked.x, tracked.u, tracker_.mode(), tracked.index, tracked.gamma, trajectory_seq_);
     // The end of an open path that still moves: stop, then hold there.
     const double end_speed = velocity(tracker_.trajectory().samples.back().x).norm();
@@ -108,7 +113,7 @@ bool ReferenceGenerator::flyExit(const StateEstimate& estimate, Reference& out) 
   State x;
   Input u;
   transition_.reference(now, x, u);
-  if (guardTrips(estimate, x)) return update(estimate, out);
+  if (guardTrips(estimate, x, u)) return update(estimate, out);
   emit(out, x, u, ReferenceMode::kTransition, 0, 0.0, -1);
   setpoint_ = position(x);
   yaw_ = quat::yaw(orientation(x));

@@ -5,15 +5,20 @@
 #include "sdlqr/math/lqr.hpp"
 #include "sdlqr/math/lqr_extensions.hpp"
 #include "sdlqr/math/quaternion.hpp"
+#include "sdlqr/controller/drag_feedforward.hpp"
 #include "sdlqr/controller/state_prediction.hpp"
 
 namespace sdlqr::controller {
 
 namespace {
 
+// The hover K is the paper's (drag-free) model's: hover_lqr takes only the feed-forward against the
+// drag (lqr.model_rotor_drag), and the fallback stays the K every law can fall back on.
 LqrResult solveHover(const LqrParams& lqr) {
   const State hover = makeState(Vec3::Zero(), identityQuat(), Vec3::Zero());
-  return solveLqr(hover, makeInput(Vec3::Zero(), lqr.gravity), lqr);
+  LqrParams drag_free = lqr;
+  drag_free.model_rotor_drag = false;
+  return solveLqr(hover, makeInput(Vec3::Zero(), lqr.gravity), drag_free);
 }
 
 GainMatrix solveHoverGain(const LqrParams& lqr) {
@@ -264,6 +269,7 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
     return false;
   }
   status_.phase = references_.phase();
+  compensateRotorDrag(reference.x, reference.u, lqr_.params().gravity, lqr_.params().rotorDrag());
 
   const LawTick law_tick = computeLaw(estimate, reference);
   const GainsFreshness freshness = law_tick.freshness;

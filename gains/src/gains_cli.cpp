@@ -102,8 +102,8 @@ const char* const kOnceEpilog =
     "          \"solve_us\", \"residual\", \"x_lin\" (quaternion normalized), \"u_lin\"}\n"
     "exit codes: 0 solved, 1 solver failure (JSON still printed), 2 bad input or config";
 
-LqrParams lqrParamsWithMethod(const ConfigReader& lqr, const OnceOptions& options) {
-  LqrParams params = LqrParams::load(lqr);
+LqrParams lqrParamsWithMethod(const ConfigReader& root, const OnceOptions& options) {
+  LqrParams params = LqrParams::loadWithVehicle(root);
   if (!options.method_text.empty() && !parseLqrMethod(options.method_text, params.method)) {
     throw std::invalid_argument("--method: expected tangent or iterative, got '" + options.method_text + "'");
   }

@@ -132,7 +132,7 @@ void parseReplayOptions(int argc, char** argv, ReplayOptions& o) {
 replay::ReplayParams loadReplayParams(const ConfigReader& config) {
   replay::ReplayParams params;
   params.estimator = estimator::EstimatorParams::load(config.child("estimator"));
-  params.lqr = LqrParams::load(config.child("lqr"));
+  params.lqr = LqrParams::loadWithVehicle(config);
   params.controller = controller::ControllerParams::load(config.child("controller"));
   params.gains = gains::GainsParams::load(config.child("gains"));
   params.faults = FaultParams::load(config.child("faults"));

@@ -10,10 +10,10 @@
 
 namespace sdlqr {
 
-double closedLoopSpectralRadius(const GainSet& m) {
+double closedLoopSpectralRadius(const GainSet& m, const RotorDrag& drag) {
   constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
   if (m.law == ControlLaw::kSdlqrIntegral || m.law == ControlLaw::kSdlqrActuator) {
-    return extendedClosedLoopSpectralRadius(m.law, m.x_lin, m.u_lin, m.dt, m.thrust_time_constant, m.K, m.K_aug);
+    return extendedClosedLoopSpectralRadius(m.law, m.x_lin, m.u_lin, m.dt, m.thrust_time_constant, m.K, m.K_aug, drag);
   }
   const Quat q = orientation(m.x_lin);
   if (!m.K.allFinite() || !m.x_lin.allFinite() || !m.u_lin.allFinite() || !std::isfinite(m.dt) || m.dt <= 0.0 ||
@@ -23,7 +23,7 @@ double closedLoopSpectralRadius(const GainSet& m) {
   State x = m.x_lin;
   orientation(x).normalize();
   const TangentBasis E = tangentBasis(orientation(x));
-  const Linearization linearization = linearize(x, m.u_lin, m.thrust_gain);
+  const Linearization linearization = linearize(x, m.u_lin, m.thrust_gain, drag);
   const TangentMatrix A = E.transpose() * linearization.A * E;
   const TangentInputMatrix B = E.transpose() * linearization.B;
   const DiscreteSystem<kTangentDim, kInputDim> discrete = discretizeZoh<kTangentDim, kInputDim>(A, B, m.dt);
@@ -37,8 +37,8 @@ double closedLoopSpectralRadius(const GainSet& m) {
   return solver.eigenvalues().cwiseAbs().maxCoeff();
 }
 
-RejectReason validateClosedLoop(const GainSet& m, double max_spectral_radius) {
-  const double radius = closedLoopSpectralRadius(m);
+RejectReason validateClosedLoop(const GainSet& m, const RotorDrag& drag, double max_spectral_radius) {
+  const double radius = closedLoopSpectralRadius(m, drag);
   return std::isfinite(radius) && radius < max_spectral_radius ? RejectReason::kNone : RejectReason::kUnstable;
 }
 

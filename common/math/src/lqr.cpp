@@ -36,7 +36,7 @@ const char* dareFailureReason(SolveStatus status) {
 
 LqrResult solveTangent(const State& x, const Input& u, const LqrParams& params, double thrust_gain) {
   const TangentBasis E = tangentBasis(orientation(x));
-  const TangentSystem system = projectToTangent(linearize(x, u, thrust_gain), E, params.q_diag);
+  const TangentSystem system = projectToTangent(linearize(x, u, thrust_gain, params.rotorDrag()), E, params.q_diag);
   const DiscreteSystem<kTangentDim, kInputDim> discrete = discretizeZoh<kTangentDim, kInputDim>(system.A, system.B, params.dt);
   if (!discrete.A.allFinite() || !discrete.B.allFinite()) {
     return failure(SolveStatus::kNumericalFailure, "non-finite discretized system");
@@ -61,7 +61,7 @@ LqrResult solveTangent(const State& x, const Input& u, const LqrParams& params, 
 }
 
 LqrResult solveIterative(const State& x, const Input& u, const LqrParams& params, double thrust_gain) {
-  const Linearization linearization = linearize(x, u, thrust_gain);
+  const Linearization linearization = linearize(x, u, thrust_gain, params.rotorDrag());
   const DiscreteSystem<kStateDim, kInputDim> discrete =
       discretizeZoh<kStateDim, kInputDim>(linearization.A, linearization.B, params.dt);
   if (!discrete.A.allFinite() || !discrete.B.allFinite()) {

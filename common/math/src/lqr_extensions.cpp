@@ -22,8 +22,8 @@ ExtendedLqrResult failure(SolveStatus status, const char* reason, int iterations
   return result;
 }
 
-TangentSystem paperTangentSystem(const State& x_lin, const Input& u_lin, const State& q_diag) {
-  return projectToTangent(linearize(x_lin, u_lin), tangentBasis(orientation(x_lin)), q_diag);
+TangentSystem paperTangentSystem(const State& x_lin, const Input& u_lin, const State& q_diag, const RotorDrag& drag) {
+  return projectToTangent(linearize(x_lin, u_lin, 1.0, drag), tangentBasis(orientation(x_lin)), q_diag);
 }
 
 // The integral model's continuous matrices without its cost.
@@ -88,7 +88,7 @@ double spectralRadius(const Eigen::Matrix<double, N, N>& A, const Eigen::Matrix<
 }  // namespace
 
 AugmentedSystem<kIntegralDim> integralTangentSystem(const State& x_lin, const Input& u_lin, const LqrParams& params) {
-  const TangentSystem paper = paperTangentSystem(x_lin, u_lin, params.q_diag);
+  const TangentSystem paper = paperTangentSystem(x_lin, u_lin, params.q_diag, params.rotorDrag());
   AugmentedSystem<kIntegralDim> system;
   integralDynamics(paper, system.A, system.B);
   system.Q.setZero();
@@ -98,7 +98,7 @@ AugmentedSystem<kIntegralDim> integralTangentSystem(const State& x_lin, const In
 }
 
 AugmentedSystem<kActuatorDim> actuatorTangentSystem(const State& x_lin, const Input& u_lin, const LqrParams& params) {
-  const TangentSystem paper = paperTangentSystem(x_lin, u_lin, params.q_diag);
+  const TangentSystem paper = paperTangentSystem(x_lin, u_lin, params.q_diag, params.rotorDrag());
   AugmentedSystem<kActuatorDim> system;
   actuatorDynamics(paper, params.thrust_time_constant, system.A, system.B);
   system.Q.setZero();
@@ -130,7 +130,7 @@ ExtendedLqrResult solveLqrForLaw(const State& x_lin, const Input& u_lin, const L
 }
 
 double extendedClosedLoopSpectralRadius(ControlLaw law, const State& x_lin, const Input& u_lin, double dt, double tau,
-                                        const GainMatrix& K, const Mat4& K_aug) {
+                                        const GainMatrix& K, const Mat4& K_aug, const RotorDrag& drag) {
   if (!K.allFinite() || !K_aug.allFinite() || !x_lin.allFinite() || !u_lin.allFinite() || !(dt > 0.0) ||
       orientation(x_lin).norm() < 1e-9) {
     return kNan;
@@ -138,7 +138,7 @@ double extendedClosedLoopSpectralRadius(ControlLaw law, const State& x_lin, cons
   State x = x_lin;
   orientation(x).normalize();
   const TangentBasis E = tangentBasis(orientation(x));
-  const TangentSystem paper = paperTangentSystem(x, u_lin, State::Zero());
+  const TangentSystem paper = paperTangentSystem(x, u_lin, State::Zero(), drag);
   const TangentGainMatrix K_r = K * E;
   if (law == ControlLaw::kSdlqrIntegral) {
     Eigen::Matrix<double, kIntegralDim, kIntegralDim> A;

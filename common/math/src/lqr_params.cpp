@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "sdlqr/math/in_flight.hpp"
+#include "sdlqr/math/vehicle.hpp"
 
 namespace sdlqr {
 
@@ -69,6 +70,19 @@ bool isControlLaw(ControlLaw law) {
 
 LqrParams::LqrParams() { declaration().setDefaults(*this); }
 
+LqrParams LqrParams::loadWithVehicle(const ConfigReader& root) {
+  LqrParams params = load(root.child("lqr"));
+  params.vehicle_rotor_drag = VehicleParams::load(root.child("vehicle")).rotor_drag;
+  return params;
+}
+
+RotorDrag LqrParams::rotorDrag() const {
+  RotorDrag drag;
+  if (model_rotor_drag) drag.coefficients = vehicle_rotor_drag;
+  drag.gravity = gravity;
+  return drag;
+}
+
 const ParamTable<LqrParams>& LqrParams::declaration() {
   static const ParamTable<LqrParams> table = [] {
     using P = LqrParams;
@@ -107,6 +121,9 @@ const ParamTable<LqrParams>& LqrParams::declaration() {
     // The plant's lag is vehicle.motor_time_constant; this is what the controller's model assumes.
     t.number("thrust_time_constant", &P::thrust_time_constant, 0.03, "s", Range::openClosed(0.0, 1.0),
              "sdlqr_actuator: the model's first-order collective-thrust lag (vehicle: motor_time_constant)");
+    t.flag("model_rotor_drag", &P::model_rotor_drag, false,
+           "the model includes vehicle.rotor_drag: the feed-forward thrust and attitude that fly the reference "
+           "against it, and its terms in the linearization (off: the paper's drag-free model)");
     t.check("c_max", [](const P& p) { return p.c_max > p.c_min; }, "must be > c_min");
     return t;
   }();

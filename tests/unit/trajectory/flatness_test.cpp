@@ -14,10 +14,15 @@ namespace {
 
 // Flies the feed-forward inputs open loop through the paper's model (RK4, inputs taken from the
 // flat map at each stage time) and returns the largest position error over [t0, t0 + span].
-double openLoopDrift(const MinSnapTrajectory& trajectory, double t0, double span, double* attitude_error = nullptr) {
+// With `plant_drag` the model flown has rotor drag, and `feed_forward_drag` is the drag the flat map
+// compensates.
+double openLoopDrift(const MinSnapTrajectory& trajectory, double t0, double span, double* attitude_error = nullptr,
+                     const RotorDrag& plant_drag = {}, const RotorDrag& feed_forward_drag = {}) {
   const double h = 1e-3;
-  auto input = [&](double t) { return flatToReference(trajectory.evaluate(t), kDefaultGravity).u; };
-  State x = flatToReference(trajectory.evaluate(t0), kDefaultGravity).x;
+  auto reference = [&](double t) { return flatToReference(trajectory.evaluate(t), kDefaultGravity, feed_forward_drag); };
+  auto input = [&](double t) { return reference(t).u; };
+  auto dynamics = [&](const State& x, const Input& u, double g) { return sdlqr::dynamics(x, u, g, plant_drag); };
+  State x = reference(t0).x;
   double worst = 0.0;
   double worst_attitude = 0.0;
   const int steps = static_cast<int>(std::lround(span / h));
@@ -29,9 +34,9 @@ double openLoopDrift(const MinSnapTrajectory& trajectory, double t0, double span
     const State k4 = dynamics(x + h * k3, input(t + h), kDefaultGravity);
     x += h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
     orientation(x).normalize();
-    const State reference = flatToReference(trajectory.evaluate(t + h), kDefaultGravity).x;
-    worst = std::max(worst, (position(x) - position(reference)).norm());
-    worst_attitude = std::max(worst_attitude, quat::boxMinus(orientation(x), orientation(reference)).norm());
+    const State target = reference(t + h).x;
+    worst = std::max(worst, (position(x) - position(target)).norm());
+    worst_attitude = std::max(worst_attitude, quat::boxMinus(orientation(x), orientation(target)).norm());
   }
   if (attitude_error) *attitude_error = worst_attitude;
   return worst;
@@ -78,6 +83,68 @@ TEST(Flatness, YawRateFeedForwardIsExactToo) {
             << " rad\n";
   EXPECT_LT(drift, 0.01);
   EXPECT_LT(attitude, 1e-4);
+}
+
+// A lap at 5 m/s with a turning heading (the agile vehicle's scaled min-snap speed).
+MinSnapTrajectory fastTurningLap() {
+  std::vector<Waypoint> waypoints = paperWaypoints(1.0);
+  for (int j = 0; j < 4; ++j) {
+    waypoints[j].yaw = 0.8 * j;
+    waypoints[j].has_yaw = true;
+  }
+  MinSnapOptions options;
+  options.v_max = 5.0;
+  options.periodic = true;
+  return generateMinSnap(waypoints, options);
+}
+
+RotorDrag agileDrag() {
+  RotorDrag drag;
+  drag.coefficients = Vec3(0.69, 0.69, 1.34);  // config/agile752.yaml
+  return drag;
+}
+
+// Issue 25: the feed-forward with rotor drag flies the path open loop through the model with the
+// same drag (the attitude, thrust and body rates that realize a + g plus the drag v causes);
+// the drag-free feed-forward through that model leaves it by metres (the negative).
+TEST(Flatness, RotorDragFeedForwardReproducesAFastLapOpenLoopThroughTheDragModel) {
+  const MinSnapTrajectory lap = fastTurningLap();
+  double attitude = 0.0;
+  const double drift = openLoopDrift(lap, 0.0, 5.0, &attitude, agileDrag(), agileDrag());
+  const double uncompensated = openLoopDrift(lap, 0.0, 5.0, nullptr, agileDrag(), RotorDrag{});
+  std::cout << "  5 m/s lap with drag 0.69/0.69/1.34 1/s: open-loop drift over 5 s " << drift * 1e3
+            << " mm (attitude " << attitude << " rad); drag-free feed-forward " << uncompensated << " m\n";
+  EXPECT_LT(drift, 0.01);
+  EXPECT_LT(attitude, 1e-3);
+  EXPECT_GT(uncompensated, 1.0);
+}
+
+// The thrust vector with drag: c z_b = a + g e_z + s(c) R D R^T v (so f's velocity row is a exactly),
+// body rates the attitude's derivative, and no drag is the map above bit for bit.
+TEST(Flatness, RotorDragReferenceBalancesTheDragAndItsRatesMatchTheAttitude) {
+  const MinSnapTrajectory lap = fastTurningLap();
+  const double h = 1e-5;
+  double worst_rate = 0.0;
+  for (double t = 0.1; t < lap.duration() - 0.1; t += 0.1) {
+    const FlatOutput flat = lap.evaluate(t);
+    const FlatReference ref = flatToReference(flat, kDefaultGravity, agileDrag());
+    ASSERT_FALSE(ref.singular);
+    const State f = dynamics(ref.x, ref.u, kDefaultGravity, agileDrag());
+    EXPECT_LT((velocity(f) - flat.acceleration).norm(), 1e-9) << "t " << t;
+    // The heading's construction: x_b perpendicular to y_c (ZYX yaw flips where the tilt passes 90 degrees).
+    const Vec3 y_c(-std::sin(flat.yaw), std::cos(flat.yaw), 0.0);
+    EXPECT_NEAR(quat::rotationMatrix(orientation(ref.x)).col(0).dot(y_c), 0.0, 1e-12);
+    const Quat before = orientation(flatToReference(lap.evaluate(t - h), kDefaultGravity, agileDrag()).x);
+    const Quat after = orientation(flatToReference(lap.evaluate(t + h), kDefaultGravity, agileDrag()).x);
+    worst_rate = std::max(worst_rate, (quat::boxMinus(after, before) / (2.0 * h) - bodyRate(ref.u)).norm());
+    const FlatReference none = flatToReference(flat, kDefaultGravity, RotorDrag{});
+    const FlatReference paper = flatToReference(flat, kDefaultGravity);
+    EXPECT_EQ(none.x, paper.x);
+    EXPECT_EQ(none.u, paper.u);
+  }
+  std::cout << "  with drag: largest body-rate error against the attitude's finite difference " << worst_rate
+            << " rad/s\n";
+  EXPECT_LT(worst_rate, 1e-5);
 }
 
 TEST(Flatness, AttitudeAndThrustMatchAccelerationPlusGravity) {

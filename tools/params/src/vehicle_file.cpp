@@ -11,6 +11,7 @@ VehicleFile VehicleFile::load(const std::string& path) {
   forEachSection(file, [&](const char* name, auto& section) {
     section = std::decay_t<decltype(section)>::load(root.child(name));
   });
+  file.lqr.vehicle_rotor_drag = file.vehicle.rotor_drag;
   throwIfInvalid(root.child("lqr"), lqrLimitsInvalidReason(file.lqr, file.validation));
   const ConfigReader lowlevel = root.child("lowlevel");
   throwIfInvalid(lowlevel, file.lowlevel.invalidReasonFor(file.vehicle, file.lqr.gravity));

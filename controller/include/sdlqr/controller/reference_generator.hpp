@@ -87,7 +87,8 @@ class ReferenceGenerator {
   // An exit from the last reference: to rest at `hold` (nullptr: a stop), then `then`.
   bool beginExit(const Vec3* hold, double yaw, FlightPhase then);
   // Beyond the guard: recover (level, stop) and hold where the vehicle stops. True if it tripped.
-  bool guardTrips(const StateEstimate& estimate, const State& reference);
+  // The attitude judged is the one flown: with lqr.model_rotor_drag, (reference, input) remapped.
+  bool guardTrips(const StateEstimate& estimate, const State& reference, const Input& input);
   void emit(Reference& out, const State& x, const Input& u, ReferenceMode mode, int index, double gamma,
             int64_t trajectory_seq);
 

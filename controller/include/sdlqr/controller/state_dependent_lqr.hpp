@@ -71,6 +71,8 @@ class StateDependentLqr {
 
   const ControllerStatus& status() const { return status_; }
   const GainMatrix& fallbackGain() const { return fallback_K_; }
+  // The rotor drag of the model the gains were solved for (lqr.model_rotor_drag).
+  RotorDrag modelRotorDrag() const { return lqr_.params().rotorDrag(); }
   const ReferenceGenerator& references() const { return references_; }
   const Vec3& positionErrorIntegral() const { return integral_.value(); }
   // sdlqr_adaptive's estimate of produced over commanded thrust (kept for every law; 1 on the ground).

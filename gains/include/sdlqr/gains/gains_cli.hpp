@@ -34,8 +34,9 @@ struct OnceOptions {
 };
 void addOnceOptions(ArgParser& parser, OnceOptions* options);
 extern const char* const kOnceEpilog;
-// lqr: of the vehicle file, with --method if given (std::invalid_argument on a bad name).
-LqrParams lqrParamsWithMethod(const ConfigReader& lqr, const OnceOptions& options);
+// lqr: of the vehicle file whose root is given (with vehicle.rotor_drag for its model), with
+// --method if given (std::invalid_argument on a bad name).
+LqrParams lqrParamsWithMethod(const ConfigReader& root, const OnceOptions& options);
 // --state and --input belong to --once (std::invalid_argument otherwise).
 void requireBusMode(const OnceOptions& options);
 // Solves at --state/--input, prints the JSON line; returns the exit code (0 solved, 1 failed).

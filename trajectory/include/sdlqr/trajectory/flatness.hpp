@@ -15,6 +15,7 @@
 // reference falls back to the last well-defined attitude (level at zero thrust) and zero rates,
 // and the feasibility check flags c < c_min long before.
 
+#include "sdlqr/math/model.hpp"
 #include "sdlqr/math/types.hpp"
 
 namespace sdlqr::trajectory {
@@ -38,6 +39,12 @@ struct FlatReference {
 };
 
 FlatReference flatToReference(const FlatOutput& flat, double gravity);
+
+// The same flat outputs flown against linear rotor drag (model.hpp RotorDrag, the plant's): the
+// thrust vector is c z_b = a + g e_z + s(c) R D R^T v, implicit in R and c and solved by a fixed
+// point from the drag-free attitude; the rates from its derivative (j plus the drag's rate along the
+// reference, omega and c' on both sides, a few fixed-point steps). No drag: the map above, bit for bit.
+FlatReference flatToReference(const FlatOutput& flat, double gravity, const RotorDrag& drag);
 
 // Unit quaternion (w, x, y, z) of a rotation matrix, w >= 0.
 Quat quaternionFromRotation(const Mat3& rotation);

@@ -52,9 +52,10 @@ RejectReason validate(const Trajectory& m, const ValidationLimits& limits);
 // with K; kUnstable unless every eigenvalue lies inside the circle of radius max_spectral_radius.
 // A rogue or corrupted K with finite, in-range entries is caught here. No heap allocation. GAINS of
 // an extension (law sdlqr_integral, sdlqr_actuator) are closed on their own larger model, K_aug too.
-RejectReason validateClosedLoop(const GainSet& m, double max_spectral_radius = 0.9999);
+// drag: the receiver's model's rotor drag (LqrParams::rotorDrag; none: the paper's model).
+RejectReason validateClosedLoop(const GainSet& m, const RotorDrag& drag = {}, double max_spectral_radius = 0.9999);
 // Spectral radius of that tangent closed loop (NaN when it cannot be formed), for tests and logs.
-double closedLoopSpectralRadius(const GainSet& m);
+double closedLoopSpectralRadius(const GainSet& m, const RotorDrag& drag = {});
 
 // Rejects utimes that go backwards on one channel, and (when a clock is known) that lie further
 // than `future_tolerance_us` ahead of the newest simulation time seen by the process.

@@ -46,8 +46,9 @@ ExtendedLqrResult solveLqrForLaw(const State& x_lin, const Input& u_lin, const L
 
 // The largest closed-loop eigenvalue modulus of the discretized extended model under (K, K_aug)
 // (NaN when not computable): the receiver's own check of an extension's gains.
-// dt: discretization step; tau: the actuator model's thrust lag (unused for the integral model).
+// dt: discretization step; tau: the actuator model's thrust lag (unused for the integral model);
+// drag: the receiver's model's rotor drag (LqrParams::rotorDrag).
 double extendedClosedLoopSpectralRadius(ControlLaw law, const State& x_lin, const Input& u_lin, double dt, double tau,
-                                        const GainMatrix& K, const Mat4& K_aug);
+                                        const GainMatrix& K, const Mat4& K_aug, const RotorDrag& drag = {});
 
 }  // namespace sdlqr

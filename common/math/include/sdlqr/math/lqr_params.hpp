@@ -45,11 +45,18 @@ struct LqrParams {
   Vec3 q_integral;              // cost on the integral of the position error (sdlqr_integral) [1/(m s)^2]
   double q_thrust;              // cost on the thrust state's deviation (sdlqr_actuator) [1/(m/s^2)^2]
   double thrust_time_constant;  // [s] the model's collective-thrust lag (sdlqr_actuator)
+  bool model_rotor_drag;        // the model's feed-forward and linearization include vehicle.rotor_drag
+  // Not a key: vehicle.rotor_drag, copied by loadWithVehicle() (used only when model_rotor_drag).
+  Vec3 vehicle_rotor_drag = Vec3::Zero();
 
   LqrParams();
   static const ParamTable<LqrParams>& declaration();
   // Reads the given `lqr` mapping; throws ConfigError naming the key on a wrong type or value.
   static LqrParams load(const ConfigReader& lqr) { return declaration().load(lqr); }
+  // The `lqr` section of a vehicle file's root, with the airframe's rotor drag from its `vehicle`.
+  static LqrParams loadWithVehicle(const ConfigReader& root);
+  // The rotor drag of the controllers' model: the vehicle's when model_rotor_drag, else none.
+  RotorDrag rotorDrag() const;
   // Empty when valid, else "key: reason" for the first violation found.
   std::string invalidReason() const { return declaration().invalidReason(*this); }
   bool valid() const { return invalidReason().empty(); }
