@@ -85,18 +85,21 @@ TEST(Flatness, YawRateFeedForwardIsExactToo) {
   EXPECT_LT(attitude, 1e-4);
 }
 
-// A lap at 5 m/s with a turning heading (the agile vehicle's scaled min-snap speed).
-MinSnapTrajectory fastTurningLap() {
+// Min-snap through the paper's waypoints, heading yaw_step * j at waypoint j.
+MinSnapTrajectory turningMinSnap(double yaw_step, double v_max, bool periodic) {
   std::vector<Waypoint> waypoints = paperWaypoints(1.0);
   for (int j = 0; j < 4; ++j) {
-    waypoints[j].yaw = 0.8 * j;
+    waypoints[j].yaw = yaw_step * j;
     waypoints[j].has_yaw = true;
   }
   MinSnapOptions options;
-  options.v_max = 5.0;
-  options.periodic = true;
+  options.v_max = v_max;
+  options.periodic = periodic;
   return generateMinSnap(waypoints, options);
 }
+
+// A lap at 5 m/s with a turning heading (the agile vehicle's scaled min-snap speed).
+MinSnapTrajectory fastTurningLap() { return turningMinSnap(0.8, 5.0, true); }
 
 RotorDrag agileDrag() {
   RotorDrag drag;
@@ -148,14 +151,7 @@ TEST(Flatness, RotorDragReferenceBalancesTheDragAndItsRatesMatchTheAttitude) {
 }
 
 TEST(Flatness, AttitudeAndThrustMatchAccelerationPlusGravity) {
-  std::vector<Waypoint> waypoints = paperWaypoints(1.0);
-  for (int j = 0; j < 4; ++j) {
-    waypoints[j].yaw = 0.7 * j;
-    waypoints[j].has_yaw = true;
-  }
-  MinSnapOptions options;
-  options.v_max = 3.0;
-  const MinSnapTrajectory trajectory = generateMinSnap(waypoints, options);
+  const MinSnapTrajectory trajectory = turningMinSnap(0.7, 3.0, false);
   for (double t = 0.0; t < trajectory.duration(); t += 0.05) {
     const FlatOutput flat = trajectory.evaluate(t);
     const FlatReference ref = flatToReference(flat, kDefaultGravity);
