@@ -14,17 +14,13 @@ failed_checks, one column per criterion, <criterion>.value, then the metrics) an
 Needs Debian's python3-matplotlib and numpy: run with /usr/bin/python3.
 """
 
-import argparse
-import csv
 import glob
 import math
 import os
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (after the backend choice)
-import numpy as np  # noqa: E402
+from plot_files import folder_arguments, number, plt, read_rows, save
 
 Z95 = 1.959963984540054
 
@@ -39,22 +35,11 @@ def wilson(passed, total):
     return max(0.0, centre - half), min(1.0, centre + half)
 
 
-def read_rows(path):
-    with open(path, newline="") as f:
-        reader = csv.reader(f)
-        header = next(reader)
-        return header, list(reader)
-
-
 def columns(header):
     """Parameter columns (between seed and pass) and metric columns (after the last .value)."""
     params = header[header.index("seed") + 1:header.index("pass")]
     last_value = max([i for i, h in enumerate(header) if h.endswith(".value")] + [header.index("failed_checks")])
     return params, header[last_value + 1:]
-
-
-def number(text):
-    return float(text) if text not in ("", "nan") else float("nan")
 
 
 def success_plot(header, rows, param, out_dir):
@@ -81,9 +66,7 @@ def success_plot(header, rows, param, out_dir):
     ax.set_ylim(-0.05, 1.05)
     ax.grid(True, alpha=0.3)
     ax.legend()
-    fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "success_" + param.replace("[", "_").replace("]", "") + ".png"), dpi=110)
-    plt.close(fig)
+    save(fig, os.path.join(out_dir, "success_" + param.replace("[", "_").replace("]", "") + ".png"))
 
 
 def metrics_plot(header, rows, metrics, out_dir):
@@ -106,9 +89,7 @@ def metrics_plot(header, rows, metrics, out_dir):
     for ax in list(axes.flat)[len(metrics):]:
         ax.axis("off")
     axes.flat[0].legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "metrics.png"), dpi=110)
-    plt.close(fig)
+    save(fig, os.path.join(out_dir, "metrics.png"))
 
 
 def worst_plot(batch_dir, out_dir):
@@ -128,24 +109,17 @@ def worst_plot(batch_dir, out_dir):
     axes[0].legend(fontsize=8)
     axes[-1].set_xlabel("simulation time [s]")
     fig.suptitle("worst flights (SIM_TRUTH)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "worst_flights.png"), dpi=110)
-    plt.close(fig)
+    save(fig, os.path.join(out_dir, "worst_flights.png"))
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("dir")
-    parser.add_argument("--out", default=None)
-    args = parser.parse_args()
-    header, rows = read_rows(os.path.join(args.dir, "flights.csv"))
-    out_dir = args.out or os.path.join(args.dir, "plots")
-    os.makedirs(out_dir, exist_ok=True)
+    batch_dir, out_dir = folder_arguments(__doc__.splitlines()[0])
+    header, rows = read_rows(os.path.join(batch_dir, "flights.csv"))
     params, metrics = columns(header)
     for param in params:
         success_plot(header, rows, param, out_dir)
     metrics_plot(header, rows, metrics, out_dir)
-    worst_plot(args.dir, out_dir)
+    worst_plot(batch_dir, out_dir)
     print(f"plots of {len(rows)} flights in {out_dir}")
 
 

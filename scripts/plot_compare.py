@@ -12,27 +12,12 @@ PNGs (Agg backend) to PLOTS_DIR (default DIR/plots), the names report.md links:
 Needs Debian's python3-matplotlib: run with /usr/bin/python3.
 """
 
-import argparse
-import csv
 import glob
 import math
 import os
 
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (after the backend choice)
-
-
-def read_rows(path):
-    with open(path, newline="") as f:
-        reader = csv.reader(f)
-        header = next(reader)
-        return header, list(reader)
-
-
-def number(text):
-    return float(text) if text not in ("", "nan") else float("nan")
+from plot_files import folder_arguments, number, plt, read_rows, save
 
 
 def by_controller(path):
@@ -73,9 +58,7 @@ def experiment_plot(track_path, out_dir):
         ax.grid(True, alpha=0.3)
     axes[-1].set_xlabel("simulation time [s]")
     fig.suptitle(name + " (SIM_TRUTH)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, name + ".png"), dpi=100)
-    plt.close(fig)
+    save(fig, os.path.join(out_dir, name + ".png"), dpi=100)
 
 
 def sweep_plot(sweep_path, out_dir):
@@ -102,22 +85,15 @@ def sweep_plot(sweep_path, out_dir):
         ax.grid(True, alpha=0.3)
     axes[0].legend(fontsize=8)
     fig.suptitle("speed sweep (a cross: the first failing speed)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(out_dir, "speed_sweep.png"), dpi=100)
-    plt.close(fig)
+    save(fig, os.path.join(out_dir, "speed_sweep.png"), dpi=100)
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("dir")
-    parser.add_argument("--out", default=None)
-    args = parser.parse_args()
-    out_dir = args.out or os.path.join(args.dir, "plots")
-    os.makedirs(out_dir, exist_ok=True)
-    tracks = sorted(p for p in glob.glob(os.path.join(args.dir, "tracks", "*.csv")) if not p.endswith(".path.csv"))
+    compare_dir, out_dir = folder_arguments(__doc__.splitlines()[0])
+    tracks = sorted(p for p in glob.glob(os.path.join(compare_dir, "tracks", "*.csv")) if not p.endswith(".path.csv"))
     for path in tracks:
         experiment_plot(path, out_dir)
-    sweep = os.path.join(args.dir, "sweep.csv")
+    sweep = os.path.join(compare_dir, "sweep.csv")
     if os.path.exists(sweep):
         sweep_plot(sweep, out_dir)
     print(f"plots of {len(tracks)} experiments{' and the sweep' if os.path.exists(sweep) else ''} in {out_dir}")

@@ -25,11 +25,10 @@ import json
 import os
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (after the backend choice)
-import numpy as np  # noqa: E402
+import plot_files
+from plot_files import plt
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_log import Channel  # noqa: E402  (shared CSV reader)
@@ -111,11 +110,7 @@ def scheduled_positions(run, t):
 
 
 def save(fig, out, name):
-    path = os.path.join(out, name)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    print(f"plot_experiments: wrote {path}")
+    print(f"plot_experiments: wrote {plot_files.save(fig, os.path.join(out, name))}")
 
 
 def plot_paths(run, out):

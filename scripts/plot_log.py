@@ -20,11 +20,10 @@ import csv
 import os
 import sys
 
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402  (after the backend choice)
-import numpy as np  # noqa: E402
+import plot_files
+from plot_files import plt
 
 
 def column_name(header_cell):
@@ -87,11 +86,7 @@ def interp_rows(t_new, t, values):
 
 
 def save(fig, out, name):
-    path = os.path.join(out, name)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
-    print(f"plot_log: wrote {path}")
+    print(f"plot_log: wrote {plot_files.save(fig, os.path.join(out, name))}")
 
 
 def main():

@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sdlqr/math/solve_status.hpp"
+
 namespace sdlqr::gains {
 
 namespace {
@@ -58,16 +60,6 @@ State parseStateList(const std::string& text, const std::string& option) {
 Input parseInputList(const std::string& text, const std::string& option) {
   const std::vector<double> values = parseNumberList(text, option, kInputDim);
   return Eigen::Map<const Input>(values.data());
-}
-
-const char* toString(SolveStatus status) {
-  switch (status) {
-    case SolveStatus::kOk: return "ok";
-    case SolveStatus::kNotConverged: return "not_converged";
-    case SolveStatus::kNumericalFailure: return "numerical_failure";
-    case SolveStatus::kInvalidInput: return "invalid_input";
-  }
-  return "unknown";
 }
 
 std::string formatGainsJson(const State& x_lin, const Input& u_lin, const LqrParams& params, const LqrResult& result,

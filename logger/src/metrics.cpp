@@ -5,6 +5,7 @@
 #include <limits>
 #include <set>
 
+#include "sdlqr/math/solve_status.hpp"
 #include "sdlqr/tables/json_document.hpp"
 
 namespace sdlqr::logger {
@@ -46,16 +47,6 @@ Distribution intervalsMs(const std::vector<int64_t>& times) {
 double rateHz(size_t count, double span_us) {
   if (count < 2 || !(span_us > 0.0)) return kNaN;
   return static_cast<double>(count - 1) / (span_us * kUsToS);
-}
-
-const char* solveStatusName(SolveStatus status) {
-  switch (status) {
-    case SolveStatus::kOk: return "ok";
-    case SolveStatus::kNotConverged: return "not_converged";
-    case SolveStatus::kNumericalFailure: return "numerical_failure";
-    case SolveStatus::kInvalidInput: return "invalid_input";
-  }
-  return "unknown";
 }
 
 const char* methodName(GainsMethod method) {
@@ -199,7 +190,7 @@ GainsMetrics computeGainsMetrics(const std::vector<GainSet>& gains) {
     solve_us.push_back(g.solve_us);
     iterations.push_back(static_cast<double>(g.iterations));
     residual.push_back(g.residual);
-    ++m.status[solveStatusName(g.status)];
+    ++m.status[toString(g.status)];
     ++m.method[methodName(g.method)];
   }
   m.solve_us = describe(std::move(solve_us));

@@ -1,7 +1,6 @@
 // sdlqr-top: the terminal alternative to lcm-spy. Once a second: every channel's rate, age and
 // size, and the HEARTBEAT of every process (state, CPU, counters, alive or silent).
 
-#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -17,16 +16,11 @@
 #include "sdlqr/inspect/bus_monitor.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
+#include "sdlqr/bus/wall_clock.hpp"
 
 namespace {
 
 using namespace sdlqr;
-
-int64_t wallUtime() {
-  timespec now{};
-  clock_gettime(CLOCK_REALTIME, &now);
-  return static_cast<int64_t>(now.tv_sec) * 1'000'000 + now.tv_nsec / 1000;
-}
 
 bool isHeartbeat(const std::string& channel) {
   const std::string_view base = channel::kHeartbeat;
@@ -169,7 +163,7 @@ int main(int argc, char** argv) {
       const double elapsed = std::chrono::duration<double>(now - start).count();
       if (clear) std::cout << "\033[H\033[2J";
       std::cout << "sdlqr-top  t=" << static_cast<int>(elapsed) << " s\n"
-                << inspect::formatReport(monitor.report(wallUtime())) << std::endl;
+                << inspect::formatReport(monitor.report(bus::realtimeUtime())) << std::endl;
       if (duration_s > 0.0 && elapsed >= duration_s) break;
     }
     bus.shutdown();

@@ -113,20 +113,10 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopVectorBody(const double* A_in, cons
       norm_sum += norm_squared[j];
     }
     const double change = std::sqrt(change_sum / norm_sum);
-    outcome.doublings = k;
-    outcome.last_change = change;
-    if (!std::isfinite(change)) {
-      outcome.finite = false;
-      return outcome;
+    if (doublingStops(k, change, tolerance, previous_change, outcome)) {
+      if (!outcome.finite) return outcome;
+      break;  // converged: H is symmetrized below
     }
-    // Quadratic regime: the next change is about change^3 / previous^2 (riccati.hpp).
-    const bool quadratic = k >= 2 && change < 1e-3 && change < previous_change;
-    const double predicted_next = change * change * change / (previous_change * previous_change);
-    if (change <= tolerance || (quadratic && predicted_next <= tolerance)) {
-      outcome.converged = true;
-      break;
-    }
-    previous_change = change;
     if (k == max_doublings) break;
 
     // [A' | T] = A [Y | S_G] in one product over the vectors from c0 on.

@@ -182,6 +182,27 @@ struct DoublingOutcome {
   bool converged = false;
 };
 
+// Records doubling k's relative change in `outcome`; true when the loop stops there, converged or
+// not finite. Quadratic regime: the next change is about change^3 / previous^2 (riccati.hpp), so a
+// prediction within the tolerance stops one doubling early.
+SDLQR_SDA_INLINE bool doublingStops(int k, double change, double tolerance, double& previous_change,
+                                    DoublingOutcome& outcome) {
+  outcome.doublings = k;
+  outcome.last_change = change;
+  if (!std::isfinite(change)) {
+    outcome.finite = false;
+    return true;
+  }
+  const bool quadratic = k >= 2 && change < 1e-3 && change < previous_change;
+  const double predicted_next = change * change * change / (previous_change * previous_change);
+  if (change <= tolerance || (quadratic && predicted_next <= tolerance)) {
+    outcome.converged = true;
+    return true;
+  }
+  previous_change = change;
+  return false;
+}
+
 // The SDA loop of solveDareDoubling (see riccati.hpp) on N x N blocks; A, G, H are updated in place
 // and H holds the solution estimate on return.
 template <int N>
@@ -232,20 +253,7 @@ SDLQR_SDA_INLINE DoublingOutcome doublingLoopBody(Block<N, N>& A, Block<N, N>& G
     A = T;
 
     const double change = std::sqrt(change_squared / norm_squared);
-    outcome.doublings = k;
-    outcome.last_change = change;
-    if (!std::isfinite(change)) {
-      outcome.finite = false;
-      return outcome;
-    }
-    // Quadratic regime: the next change is about change^3 / previous^2 (riccati.hpp).
-    const bool quadratic = k >= 2 && change < 1e-3 && change < previous_change;
-    const double predicted_next = change * change * change / (previous_change * previous_change);
-    if (change <= tolerance || (quadratic && predicted_next <= tolerance)) {
-      outcome.converged = true;
-      return outcome;
-    }
-    previous_change = change;
+    if (doublingStops(k, change, tolerance, previous_change, outcome)) return outcome;
   }
   return outcome;
 }

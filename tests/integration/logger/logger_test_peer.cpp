@@ -9,7 +9,6 @@
 // of its seq, so the checker regenerates each expected message. FILE lists "channel seq utime"
 // per published message (written when publishing ends).
 
-#include <time.h>
 
 #include <chrono>
 #include <cmath>
@@ -24,16 +23,11 @@
 #include "sdlqr/logger/flight_log.hpp"
 #include "sdlqr/bus/convert.hpp"
 #include "sdlqr/bus/node.hpp"
+#include "sdlqr/bus/wall_clock.hpp"
 
 namespace {
 
 using namespace sdlqr;
-
-int64_t wallUtime() {
-  timespec now{};
-  clock_gettime(CLOCK_REALTIME, &now);
-  return static_cast<int64_t>(now.tv_sec) * 1'000'000 + now.tv_nsec / 1000;
-}
 
 ImuSample imuFor(int64_t seq, int64_t utime) {
   ImuSample s;
@@ -105,7 +99,7 @@ int publish(int argc, const char* const* argv) {
     std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(period * tick));
     if (!node.spin(0)) break;
     if (duration_s > 0.0 && std::chrono::steady_clock::now() - start >= std::chrono::duration<double>(duration_s)) break;
-    const int64_t utime = wallUtime();
+    const int64_t utime = bus::realtimeUtime();
     node.publish(channel::kImu, bus::toLcm(imuFor(tick, utime)));
     note(channel::kImu, tick, utime);
     if (tick % 4 == 0) {

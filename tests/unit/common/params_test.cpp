@@ -5,21 +5,14 @@
 
 #include "sdlqr/math/lqr_params.hpp"
 
+#include "config_errors.hpp"
+
 namespace sdlqr {
 namespace {
 
-LqrParams loadText(const std::string& text) {
-  return LqrParams::load(ConfigReader(YAML::Load(text), "lqr"));
-}
+LqrParams loadText(const std::string& text) { return testing::loadSectionText<LqrParams>(text, "lqr"); }
 
-std::string errorKeyOf(const std::string& text) {
-  try {
-    loadText(text);
-  } catch (const ConfigError& e) {
-    return e.key();
-  }
-  return "<no error>";
-}
+std::string errorKeyOf(const std::string& text) { return testing::keyBlamedBy([&] { loadText(text); }); }
 
 TEST(LqrParams, DefaultsAreThePapersAndValid) {
   const LqrParams p;

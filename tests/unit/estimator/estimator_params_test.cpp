@@ -4,21 +4,14 @@
 
 #include "sdlqr/estimator/estimator_params.hpp"
 
+#include "config_errors.hpp"
+
 namespace sdlqr::estimator {
 namespace {
 
-EstimatorParams loadText(const std::string& text) {
-  return EstimatorParams::load(ConfigReader(YAML::Load(text), "estimator"));
-}
+EstimatorParams loadText(const std::string& text) { return testing::loadSectionText<EstimatorParams>(text, "estimator"); }
 
-std::string errorKeyOf(const std::string& text) {
-  try {
-    loadText(text);
-  } catch (const ConfigError& e) {
-    return e.key();
-  }
-  return "<no error>";
-}
+std::string errorKeyOf(const std::string& text) { return testing::keyBlamedBy([&] { loadText(text); }); }
 
 TEST(EstimatorParams, DefaultsAreValidAndMatchTheAgreedSensorModel) {
   const EstimatorParams p;

@@ -13,6 +13,8 @@
 #include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/lowlevel/lowlevel_params.hpp"
 
+#include "config_errors.hpp"
+
 namespace sdlqr::lowlevel {
 namespace {
 
@@ -20,14 +22,7 @@ LowlevelParams loadText(const std::string& yaml) {
   return LowlevelParams::load(ConfigReader(YAML::Load(yaml), "").child("lowlevel"));
 }
 
-std::string errorKey(const std::string& yaml) {
-  try {
-    loadText(yaml);
-  } catch (const ConfigError& e) {
-    return e.key();
-  }
-  return "<no error>";
-}
+std::string errorKey(const std::string& yaml) { return testing::keyBlamedBy([&] { loadText(yaml); }); }
 
 TEST(LowlevelParams, DefaultsAreValid) {
   const LowlevelParams params;

@@ -9,12 +9,7 @@
 namespace sdlqr::sim {
 namespace {
 
-using test::airborne;
-using test::armed;
-using test::hoverThrust;
-using test::idealParams;
-using test::runFor;
-using test::stepsFor;
+using namespace test;  // sim_test_support.hpp
 
 TEST(Ground, StartsLandedAndRestsWithoutJitterBelowWeight) {
   // GIVEN the default start (landed at z = 0) with the battery model on

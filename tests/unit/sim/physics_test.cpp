@@ -11,12 +11,7 @@
 namespace sdlqr::sim {
 namespace {
 
-using test::airborne;
-using test::armed;
-using test::hoverThrust;
-using test::idealParams;
-using test::runFor;
-using test::thrustFor;
+using namespace test;  // sim_test_support.hpp
 
 TEST(Physics, FreeFallWithMotorsOffMatchesHalfGTSquared) {
   // GIVEN a vehicle released at rest 100 m up with the motors off

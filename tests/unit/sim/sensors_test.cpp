@@ -12,11 +12,7 @@
 namespace sdlqr::sim {
 namespace {
 
-using test::airborne;
-using test::armed;
-using test::hoverThrust;
-using test::idealParams;
-using test::stepsFor;
+using namespace test;  // sim_test_support.hpp
 
 // Mean and standard deviation per axis of a series of 3-vectors.
 struct Stats {

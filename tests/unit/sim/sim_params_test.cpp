@@ -6,19 +6,14 @@
 #include "sdlqr/math/vehicle.hpp"
 #include "sdlqr/sim/sim_params.hpp"
 
+#include "config_errors.hpp"
+
 namespace sdlqr::sim {
 namespace {
 
-SimParams loadText(const std::string& text) { return SimParams::load(ConfigReader(YAML::Load(text), "sim")); }
+SimParams loadText(const std::string& text) { return testing::loadSectionText<SimParams>(text, "sim"); }
 
-std::string errorKeyOf(const std::string& text) {
-  try {
-    loadText(text);
-  } catch (const ConfigError& e) {
-    return e.key();
-  }
-  return "<no error>";
-}
+std::string errorKeyOf(const std::string& text) { return testing::keyBlamedBy([&] { loadText(text); }); }
 
 TEST(SimParams, DefaultsAreTheAgreedSensorModelAndValid) {
   const SimParams p;

@@ -7,21 +7,14 @@
 #include "sdlqr/trajectory/trajectory_csv.hpp"
 #include "sdlqr/trajectory/waypoint_file.hpp"
 
+#include "config_errors.hpp"
+
 namespace sdlqr::trajectory {
 namespace {
 
-TrajectoryParams loadText(const std::string& text) {
-  return TrajectoryParams::load(ConfigReader(YAML::Load(text), "trajectory"));
-}
+TrajectoryParams loadText(const std::string& text) { return testing::loadSectionText<TrajectoryParams>(text, "trajectory"); }
 
-std::string errorKeyOf(const std::string& text) {
-  try {
-    loadText(text);
-  } catch (const ConfigError& e) {
-    return e.key();
-  }
-  return "<no error>";
-}
+std::string errorKeyOf(const std::string& text) { return testing::keyBlamedBy([&] { loadText(text); }); }
 
 TEST(TrajectoryParams, DefaultsAreThePapersAndValid) {
   const TrajectoryParams p;
@@ -81,12 +74,7 @@ WaypointSpec waypointsFromYaml(const std::string& text) {
 }
 
 std::string waypointErrorKey(const std::string& text) {
-  try {
-    waypointsFromYaml(text);
-  } catch (const ConfigError& e) {
-    return e.key();
-  }
-  return "<no error>";
+  return testing::keyBlamedBy([&] { waypointsFromYaml(text); });
 }
 
 TEST(WaypointFile, YamlWaypoints) {

@@ -12,14 +12,20 @@ namespace {
 using S = Scope;
 using B = Bound;
 
-CriterionSpec flight(std::string_view key, B bound, std::string_view unit, std::string_view description,
-                     double (*of)(const FlightReport&)) {
+// What a criterion is called and says, and what it bounds; the caller sets the value of its scope.
+CriterionSpec described(std::string_view key, B bound, S scope, std::string_view unit, std::string_view description) {
   CriterionSpec c;
   c.key = key;
   c.bound = bound;
   c.unit = unit;
   c.description = description;
-  c.scope = S::kFlight;
+  c.scope = scope;
+  return c;
+}
+
+CriterionSpec flight(std::string_view key, B bound, std::string_view unit, std::string_view description,
+                     double (*of)(const FlightReport&)) {
+  CriterionSpec c = described(key, bound, S::kFlight, unit, description);
   c.of_flight = of;
   return c;
 }
@@ -35,23 +41,14 @@ CriterionSpec relative(CriterionSpec c) {
 
 CriterionSpec setpoint(std::string_view key, S scope, std::string_view unit, std::string_view description,
                        double (*of)(const SetpointWindow&)) {
-  CriterionSpec c;
-  c.key = key;
-  c.unit = unit;
-  c.description = description;
-  c.scope = scope;
+  CriterionSpec c = described(key, B::kAtMost, scope, unit, description);
   c.of_setpoint = of;
   return c;
 }
 
 CriterionSpec trajectory(std::string_view key, B bound, std::string_view unit, std::string_view description,
                          double (*of)(const PathTrackingReport&)) {
-  CriterionSpec c;
-  c.key = key;
-  c.bound = bound;
-  c.unit = unit;
-  c.description = description;
-  c.scope = S::kTrajectory;
+  CriterionSpec c = described(key, bound, S::kTrajectory, unit, description);
   c.of_trajectory = of;
   return c;
 }
@@ -89,12 +86,8 @@ void addAlwaysCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(always(flight("crashed", B::kAtMost, "-", "vehicle crashed (1) or not (0)",
                             [](const FlightReport& r) { return r.crashed ? 1.0 : 0.0; }), 0.0));
   // Every event of the scenario (scenario_events.hpp): what it played reached the log.
-  CriterionSpec event;
-  event.key = "event_in_log";
-  event.bound = B::kAtLeast;
-  event.unit = "-";
-  event.description = "the scenario event's message in the log (1) or not (0)";
-  event.scope = S::kEvent;
+  CriterionSpec event =
+      described("event_in_log", B::kAtLeast, S::kEvent, "-", "the scenario event's message in the log (1) or not (0)");
   event.of_event = [](const ExpectedEvent& e) { return e.found() ? 1.0 : 0.0; };
   c.push_back(always(event, 1.0));
 }
@@ -111,11 +104,8 @@ void addSetpointCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(setpoint("hover_error", S::kSetpoint, "m", "steady error, mean over the window's last {hover_window}",
                        [](const SetpointWindow& w) { return w.steady_error; }));
   // Pulls while holding a setpoint (Fig. 4).
-  CriterionSpec pull;
-  pull.key = "pull_return_time";
-  pull.unit = "s";
-  pull.description = "after release, back within {pull_return_error} of the setpoint and staying";
-  pull.scope = S::kPull;
+  CriterionSpec pull = described("pull_return_time", B::kAtMost, S::kPull, "s",
+                                 "after release, back within {pull_return_error} of the setpoint and staying");
   pull.of_pull = [](const PullWindow& p) { return p.return_time; };
   c.push_back(pull);
   CriterionSpec pull_overshoot = pull;
@@ -146,11 +136,8 @@ void addFlightCriteria(std::vector<CriterionSpec>& c) {
                      [](const FlightReport& r) { return r.state_est_rate_hz; }));
   c.push_back(flight("max_tilt_deg", B::kAtMost, "deg", "largest tilt while airborne",
                      [](const FlightReport& r) { return r.max_tilt_deg; }));
-  CriterionSpec touchdown;
-  touchdown.key = "touchdown_speed_max";
-  touchdown.unit = "m/s";
-  touchdown.description = "after LAND, vertical speed at touchdown (none before the log ends: not landed)";
-  touchdown.scope = S::kLanding;
+  CriterionSpec touchdown = described("touchdown_speed_max", B::kAtMost, S::kLanding, "m/s",
+                                      "after LAND, vertical speed at touchdown (none before the log ends: not landed)");
   touchdown.of_landing = [](const Landing& l) { return l.touchdown_speed; };
   c.push_back(touchdown);
   // Saturation where it happens (Saturation in flight_report.hpp), over the airborne flight.
@@ -195,11 +182,8 @@ void addTrajectoryCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(trajectory("thrust_limit_violations_max", B::kAtMost, "count",
                          "thrust demands (before the controller's clip) outside the vehicle's [c_min, c_max], or NaN",
                          [](const PathTrackingReport& t) { return static_cast<double>(t.thrust_violations); }));
-  CriterionSpec path_return;
-  path_return.key = "path_return_time";
-  path_return.unit = "s";
-  path_return.description = "after release, back within {path_return_error} of the path and staying";
-  path_return.scope = S::kTrajectoryPull;
+  CriterionSpec path_return = described("path_return_time", B::kAtMost, S::kTrajectoryPull, "s",
+                                        "after release, back within {path_return_error} of the path and staying");
   path_return.of_trajectory_pull = [](const PathPull& p) { return p.return_time; };
   c.push_back(path_return);
 }

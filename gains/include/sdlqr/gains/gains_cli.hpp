@@ -20,8 +20,6 @@ State parseStateList(const std::string& text, const std::string& option);
 // "wx,wy,wz,c": exactly 4 finite numbers.
 Input parseInputList(const std::string& text, const std::string& option);
 
-const char* toString(SolveStatus status);
-
 // {"status", "method", "K" (4 rows of 10), "dt", "iterations", "solve_us", "residual", "x_lin",
 // "u_lin"}; doubles with 17 significant digits (they round-trip), non-finite numbers as null.
 std::string formatGainsJson(const State& x_lin, const Input& u_lin, const LqrParams& params, const LqrResult& result,

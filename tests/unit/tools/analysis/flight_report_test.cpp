@@ -27,22 +27,22 @@ void add(logger::Series<T>& series, const T& message, int64_t receive_utime) {
   series.receive_utime.push_back(receive_utime);
 }
 
+// A COMMAND to `position`, logged as received at its own time `t` [s].
+void addCommand(logger::FlightLog& log, int64_t seq, double t, CommandType type, const Vec3& position) {
+  Command c;
+  c.seq = seq;
+  c.utime = micros(t);
+  c.command = type;
+  c.position = position;
+  add(log.command, c, c.utime);
+}
+
 // A vehicle at 1 m that is commanded 1 m along +x at t = 2 s and moves there along `x_of(t)`.
 template <class XOf>
 logger::FlightLog jumpFlight(XOf x_of, double duration = 8.0) {
   logger::FlightLog log;
-  Command takeoff;
-  takeoff.seq = 0;
-  takeoff.utime = micros(0.5);
-  takeoff.command = CommandType::kTakeoff;
-  takeoff.position = Vec3(0, 0, 1);
-  add(log.command, takeoff, takeoff.utime);
-  Command jump;
-  jump.seq = 1;
-  jump.utime = micros(2.0);
-  jump.command = CommandType::kGoto;
-  jump.position = Vec3(1, 0, 1);
-  add(log.command, jump, jump.utime);
+  addCommand(log, 0, 0.5, CommandType::kTakeoff, Vec3(0, 0, 1));
+  addCommand(log, 1, 2.0, CommandType::kGoto, Vec3(1, 0, 1));
   for (double t = 0.0; t <= duration; t += 0.004) {
     SimTruth s;
     s.utime = micros(t);
@@ -319,12 +319,7 @@ TEST(FlightReportChecks, AControllerThatSaturatesFailsWhereTheSaturationHappens)
 // controller's own REFERENCE says `reached` too (a controller that mistook the height).
 logger::FlightLog takeoffFlight(double reached) {
   logger::FlightLog log;
-  Command takeoff;
-  takeoff.seq = 0;
-  takeoff.utime = micros(0.5);
-  takeoff.command = CommandType::kTakeoff;
-  takeoff.position = Vec3(0, 0, 1);
-  add(log.command, takeoff, takeoff.utime);
+  addCommand(log, 0, 0.5, CommandType::kTakeoff, Vec3(0, 0, 1));
   for (double t = 0.0; t <= 6.0; t += 0.004) {
     SimTruth s;
     s.utime = micros(t);
