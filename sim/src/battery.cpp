@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sdlqr/math/same_bits.hpp"
+
 namespace sdlqr::sim {
 
 double lipoCellOpenCircuitVoltage(double charge) {
@@ -62,7 +64,7 @@ void Battery::update(double dt, const Vec4& rotor_thrust) {
   const double capacity_coulomb = params_.capacity_mah * 3.6;
   charge_ = std::max(0.0, charge_ - load_.current * dt / capacity_coulomb);
   thrust_scale_ = params_.enabled
-                      ? std::pow(load_.terminal_voltage / calibration_voltage_, params_.thrust_voltage_exponent)
+                      ? powSameBits(load_.terminal_voltage / calibration_voltage_, params_.thrust_voltage_exponent)
                       : 1.0;
 }
 

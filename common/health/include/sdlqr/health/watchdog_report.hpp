@@ -7,6 +7,7 @@
 
 #include "sdlqr/health/counters.hpp"
 #include "sdlqr/health/watchdog.hpp"
+#include "sdlqr/math/same_bits.hpp"
 
 namespace sdlqr {
 
@@ -21,7 +22,7 @@ class WatchdogReport {
   void update(const Watchdog& dog, double now_s) {
     counters_.set(expired_, dog.expired() ? 1 : 0);
     counters_.set(timeouts_, dog.timeouts());
-    counters_.set(age_ms_, dog.started() ? static_cast<int64_t>(std::llround(1e3 * dog.age(now_s))) : -1);
+    counters_.set(age_ms_, dog.started() ? roundToInt64(1e3 * dog.age(now_s)) : -1);
   }
 
  private:
