@@ -57,11 +57,14 @@ void Mixer::setThrustLimits(double min_thrust, double max_thrust) {
 }
 
 void Mixer::collectiveInterval(const Vec4& base, double* low, double* high) const {
+  // The eight divisions as four vector ones (the same quotients): most of a mix's time was them.
+  const Vec4 lows = (Vec4::Constant(min_thrust_) - base).cwiseQuotient(collective_column_);
+  const Vec4 highs = (Vec4::Constant(max_thrust_) - base).cwiseQuotient(collective_column_);
   *low = -kInfinity;
   *high = kInfinity;
   for (int rotor = 0; rotor < 4; ++rotor) {
-    *low = std::max(*low, (min_thrust_ - base[rotor]) / collective_column_[rotor]);
-    *high = std::min(*high, (max_thrust_ - base[rotor]) / collective_column_[rotor]);
+    *low = std::max(*low, lows[rotor]);
+    *high = std::min(*high, highs[rotor]);
   }
 }
 

@@ -49,11 +49,12 @@ Battery::Battery(const BatteryParams& params, const VehicleParams& vehicle, doub
 }
 
 double Battery::power(const Vec4& rotor_thrust) const {
+  Vec4 thrust;
+  for (int i = 0; i < 4; ++i) thrust[i] = std::max(rotor_thrust[i], 0.0);
+  // Momentum theory: induced power ~ T^1.5 (vector square roots, summed in rotor order).
+  const Vec4 induced = thrust.cwiseProduct(thrust.cwiseSqrt());
   double rotors = 0.0;
-  for (int i = 0; i < 4; ++i) {
-    const double t = std::max(rotor_thrust[i], 0.0);
-    rotors += t * std::sqrt(t);  // momentum theory: induced power ~ T^1.5
-  }
+  for (int i = 0; i < 4; ++i) rotors += induced[i];
   return params_.idle_power + params_.rotor_power_coefficient * rotors;
 }
 

@@ -39,8 +39,12 @@ RotorWrench::RotorWrench(const VehicleParams& vehicle, double gravity)
 RotorWrench::Load RotorWrench::load(const Vec4& thrust) const {
   Load load;
   load.thrust_and_torques = effectiveness_ * thrust;
+  Vec4 spinning;
+  for (int i = 0; i < 4; ++i) spinning[i] = std::max(thrust[i], 0.0);
+  // Divisions and square roots as vector operations (the same values), summed in rotor order.
+  const Vec4 speed_ratios = (spinning / hover_thrust_per_rotor_).cwiseSqrt();
   load.rotor_speed_ratio = 0.0;
-  for (int i = 0; i < 4; ++i) load.rotor_speed_ratio += std::sqrt(std::max(thrust[i], 0.0) / hover_thrust_per_rotor_);
+  for (int i = 0; i < 4; ++i) load.rotor_speed_ratio += speed_ratios[i];
   load.rotor_speed_ratio *= 0.25;
   return load;
 }
