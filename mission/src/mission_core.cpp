@@ -86,7 +86,10 @@ void MissionCore::onStateEstimate(const StateEstimate& estimate, Outbox& out) {
 
 void MissionCore::onClock(const SimClockTick& clock, Outbox& out) {
   const int64_t utime = clock.utime;
-  if (utime <= now_utime_) return;
+  // A clock that leaps (a forged or corrupt SIM_CLOCK: faults_fuzz_flight once saw the mission jump
+  // to 2.7e10 s and play its landing at once) is taken only once it continues, as the controller's
+  // and the gain solver's STATE_EST clock (ClockGate); a clock not after the last is ignored.
+  if (health_.reject(Stream::kSimClock, clock_gate_.offer(utime))) return;
   now_utime_ = utime;
   health_.setSimTime(utime);
   while (const ScenarioEvent* event = player_.nextDue(utime)) {

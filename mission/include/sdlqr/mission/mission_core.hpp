@@ -5,7 +5,8 @@
 //
 //   onClock(clock)   a newer clock plays every event due (COMMAND, DISTURBANCE, PARAMS,
 //                    TRAJECTORY through the Outbox, each stamped with the clock and its own
-//                    channel's seq) and the due re-send; a clock not after the last is ignored
+//                    channel's seq) and the due re-send; a clock not after the last is ignored,
+//                    one that leaps ahead is taken only once it continues (ClockGate)
 //   onWallTime(now)  the clock watchdog: no newer clock for no_clock_timeout_s -> clockLost()
 //   onStateEstimate  throw mode only (the scenario's throw_mode): a detected throw publishes ARM,
 //                    then GOTO the estimated position (hold there), counted as "throw.detected"
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "sdlqr/health/process_health.hpp"
+#include "sdlqr/health/validate.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/messages/outbox.hpp"
 #include "sdlqr/messages/ports.hpp"
@@ -84,6 +86,7 @@ class MissionCore {
   std::optional<ThrowDetector> throw_detector_;
   int64_t throw_armed_utime_ = -1;
   Counters::Id throws_detected_;
+  ClockGate clock_gate_;
   int64_t now_utime_ = -1;
   // One sequence per channel: subscribers count gaps in seq as lost messages.
   int64_t command_seq_ = 0, disturbance_seq_ = 0, params_seq_ = 0, trajectory_seq_ = 0;

@@ -313,6 +313,24 @@ TEST(Stressors, AnUploadBeyondTheVehicleIsFlownTimeScaledWhereTheVehicleFileSays
   EXPECT_NE(refused.last_error.find("refused: beyond the vehicle"), std::string::npos) << refused.last_error;
 }
 
+// A forged SIM_CLOCK that leaps ahead (a fuzzer's huge utime, as faults_fuzz_flight once sent) mid-hover:
+// the mission refuses it (ClockGate) and keeps its clock; its events still play on the real one.
+TEST(Stressors, TheMissionRefusesAClockThatLeapsAhead) {
+  const mission::Scenario hover = scenarioNamed("hover_steady");  // lands at 36 s of 40
+  const closedloop::StackConfig config = closedloop::StackConfig::load(hover.vehicle_path);
+  closedloop::ClosedLoop loop(config, hover);
+  while (loop.utime() < 5'000'000) loop.step();
+  SimClockTick forged;
+  forged.utime = 27'094'305'290'949'000;  // the one seen: 2.7e10 s
+  loop.inject(forged);
+  const ProcessHealth& health = loop.mission().health();
+  EXPECT_EQ(health.rejections(Stream::kSimClock, RejectReason::kTimeFuture), 1);
+  EXPECT_LT(loop.mission().now(), 6'000'000) << "the mission's clock leapt";
+  loop.run();
+  EXPECT_EQ(loop.mission().now() / 1'000'000, static_cast<int64_t>(hover.duration)) << "to its end on the real clock";
+  expectAllPass(StressedFlight{loop.log(), analysis::analyzeFlight(loop.log(), hover), 0});
+}
+
 // An infeasible path is refused when the scenario is loaded, with the report in one line naming
 // the event; the same path with on_infeasible: scale loads.
 TEST(Stressors, InfeasiblePathIsRefusedWithTheFeasibilityReport) {
