@@ -242,18 +242,16 @@ struct RunResult {
   std::string stderr_text;
 };
 
-bool namespacesAvailable() {
-  static const bool available = std::system("unshare -n true > /dev/null 2>&1") == 0 ||
-                                std::system("unshare -rn true > /dev/null 2>&1") == 0;
-  return available;
-}
-
-// As root a plain network namespace, else one inside a user namespace; asked once, not per case.
+// As root a plain network namespace, else one inside a user namespace; empty without either.
+// Asked once, not per case.
 const std::string& unshareCommand() {
-  static const std::string command =
-      std::system("unshare -n true > /dev/null 2>&1") == 0 ? "unshare -n" : "unshare -rn";
+  static const std::string command = std::system("unshare -n true > /dev/null 2>&1") == 0    ? "unshare -n"
+                                     : std::system("unshare -rn true > /dev/null 2>&1") == 0 ? "unshare -rn"
+                                                                                             : "";
   return command;
 }
+
+bool namespacesAvailable() { return !unshareCommand().empty(); }
 
 RunResult run(const std::string& executable, const std::string& config_path, bool scenario,
               const std::string& stderr_path) {
