@@ -1,4 +1,4 @@
-// Speed of Monte Carlo batches (tools/batch): whole hover_jumps flights (52 s: the 1 kHz
+// Speed of Monte Carlo batches (tools/offline/batch): whole hover_jumps flights (52 s: the 1 kHz
 // simulation and bodyrate loop, the 250 Hz estimator, the 100 Hz controller, the 10 Hz gain
 // solves, the mission and the analysis of the flight) on the in-process closed loop.
 //

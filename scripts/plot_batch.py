@@ -26,7 +26,7 @@ Z95 = 1.959963984540054
 
 
 def wilson(passed, total):
-    """The same interval as tools/batch/src/summary.cpp."""
+    """The same interval as tools/offline/batch/src/summary.cpp."""
     if total == 0:
         return 0.0, 1.0
     p = passed / total

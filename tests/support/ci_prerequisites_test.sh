@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # With CI=true a test whose prerequisite is missing fails; without it, it is skipped and says so.
 # Each kind of prerequisite check is run here with its prerequisite hidden:
-#   - a shell test (tools/fuzz/run_fuzz.sh) given a build folder without the libFuzzer harnesses;
+#   - a shell test (tools/robustness/fuzz/run_fuzz.sh) given a build folder without the libFuzzer
+#     harnesses;
 #   - a GoogleTest test (config_validation_tests) with `unshare` off the PATH (no namespaces).
 #   ci_prerequisites_test.sh SOURCE_DIR BUILD_DIR CONFIG_VALIDATION_TESTS
 set -u
@@ -19,9 +20,9 @@ expect() {  # description expected_status actual_status output pattern
 
 no_unshare=$(mktemp -d)
 trap 'rm -rf "$no_unshare"' EXIT
-out=$(env -u CI bash "$src/tools/fuzz/run_fuzz.sh" "$no_unshare" 1 2>&1)
+out=$(env -u CI bash "$src/tools/robustness/fuzz/run_fuzz.sh" "$no_unshare" 1 2>&1)
 expect "run_fuzz without libFuzzer harnesses, CI unset" 77 $? "$out" "SKIPPED: missing prerequisite"
-out=$(CI=true bash "$src/tools/fuzz/run_fuzz.sh" "$no_unshare" 1 2>&1)
+out=$(CI=true bash "$src/tools/robustness/fuzz/run_fuzz.sh" "$no_unshare" 1 2>&1)
 expect "run_fuzz without libFuzzer harnesses, CI=true" 1 $? "$out" "FAIL: missing prerequisite with CI=true"
 
 filter=--gtest_filter=ConfigValidation.EveryInvalidFieldOfAScenarioIsRefusedByTheMission

@@ -13,8 +13,8 @@
 # Nothing between the mark and the fault starts a process: on this kind of machine (a VM whose
 # page faults are costly) a fork/exec once waited 37 s beside compilers (docs/verdicts.md).
 #
-# The waiter is `sdlqr-top --at-sim-time` (tools/inspect/top_main.cpp), a process on the bus like
-# the launcher's own heartbeat waiter, under the same name, which sdlqr-faultcheck lets stop.
+# The waiter is `sdlqr-top --at-sim-time` (tools/examine/inspect/top_main.cpp), a process on the bus
+# like the launcher's own heartbeat waiter, under the same name, which sdlqr-faultcheck lets stop.
 
 sim_time_marks() {
   local build="$1" marks="$2"

@@ -1,5 +1,5 @@
-// JSON Schemas of the LCM types, for the JSON encoding of a message (tools/foxglove lcm_json.hpp):
-// one object member per field in .lcm order, one nested array per array dimension, integers as
+// JSON Schemas of the LCM types, for the JSON encoding of a message (tools/examine/foxglove
+// lcm_json.hpp): one object member per field in .lcm order, one nested array per array dimension, integers as
 // integers, float and double as numbers or null (JSON has no NaN or infinity), strings as strings.
 // Foxglove advertises a channel's schema this way ("jsonschema" schema encoding), and the MCAP
 // export writes it beside each channel.

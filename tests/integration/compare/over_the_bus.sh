@@ -10,7 +10,7 @@ set -uo pipefail
 build="$1" work="$2"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
 rm -rf "$work"
-SDLQR_BUILD_DIR="$build" "$root/sdlqr" compare "$root/tests/unit/tools/compare/small_benchmark.yaml" \
+SDLQR_BUILD_DIR="$build" "$root/sdlqr" compare "$root/tests/unit/tools/offline/compare/small_benchmark.yaml" \
   --scenarios short_hover --out "$work" --no-plots --bus >"$work.out" 2>&1
 status=$?
 cat "$work/bus.md" 2>/dev/null

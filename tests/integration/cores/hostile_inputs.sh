@@ -3,7 +3,7 @@
 # over real multicast while hostile_peer publishes the set (tests/support/hostile_inputs.hpp) at
 # t = 5 s (again, for an input a busy receiver dropped on arrival) and reads every process's HEARTBEAT; then sdlqr-replay recomputes the recorded flight,
 # hostile inputs included, and its cores must count the same rejections. The in-process loop's
-# check of the same set is tests/unit/tools/closedloop/hostile_inputs_test.cpp.
+# check of the same set is tests/unit/tools/offline/closedloop/hostile_inputs_test.cpp.
 #   hostile_inputs.sh BUILD_DIR WORK_DIR PEER
 set -uo pipefail
 build="$1" work="$2" peer="$3"

@@ -1,6 +1,6 @@
 #pragma once
 // `sdlqr-logger export LOG --mcap FILE`: the whole LCM event log as one MCAP file, for Foxglove
-// and any MCAP reader (tools/foxglove/mcap_writer.hpp: chunked, indexed, CRCs).
+// and any MCAP reader (tools/examine/foxglove/mcap_writer.hpp: chunked, indexed, CRCs).
 //
 // Every channel of the log is an MCAP channel of the same name, every event one message with
 // log_time = publish_time = the event's receive time (the recorder's clock) in ns and sequence =

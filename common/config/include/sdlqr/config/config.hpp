@@ -33,7 +33,7 @@ class ConfigReader;
 // top-level section not in vehicleFileSections() is an error (a typo would otherwise be ignored).
 ConfigReader loadVehicleConfig(const std::string& path);
 // The top-level sections of a vehicle file, in the order the printed defaults list them (each
-// one's keys are declared by its parameter struct; tools/params lists the struct of each).
+// one's keys are declared by its parameter struct; tools/setup/params lists the struct of each).
 const std::vector<std::string>& vehicleFileSections();
 
 // A view of one mapping in the document, remembering its dotted path for messages.

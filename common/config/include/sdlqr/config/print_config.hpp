@@ -1,6 +1,6 @@
 #pragma once
 // Prints whole sections of a vehicle file as commented YAML (each a "# help" line, "name:" and its
-// keys): the printed defaults of tools/params (config/quad255.yaml) and the --print-config of
+// keys): the printed defaults of tools/setup/params (config/quad255.yaml) and the --print-config of
 // every process, which shows the sections it reads with the values it would run with.
 
 #include <functional>

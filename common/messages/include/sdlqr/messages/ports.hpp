@@ -5,9 +5,9 @@
 //   - the process: bus::CoreBinding subscribes each input port on the channel of its type
 //     (common/bus/core_binding.hpp), with the port's queue and deadline;
 //   - the in-process closed loop: each published message reaches every core whose input port
-//     takes its type (tools/closedloop);
+//     takes its type (tools/offline/closedloop);
 //   - the replay: what it feeds the recomputed cores and which core counts a refused input
-//     (tools/replay).
+//     (tools/examine/replay).
 // A core declares, in its class:
 //
 //   static constexpr auto inputs() {
