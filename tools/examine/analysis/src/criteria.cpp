@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 
 namespace sdlqr::analysis {
@@ -23,11 +24,19 @@ CriterionSpec described(std::string_view key, B bound, S scope, std::string_view
   return c;
 }
 
+// A criterion of `scope` whose value `of` reads, kept in the spec's `value` member of that scope.
+// `of` is not deduced (common_type), so a lambda converts to the member's function pointer.
+template <typename Of>
+CriterionSpec valued(std::string_view key, B bound, S scope, std::string_view unit, std::string_view description,
+                     Of CriterionSpec::*value, typename std::common_type<Of>::type of) {
+  CriterionSpec c = described(key, bound, scope, unit, description);
+  c.*value = of;
+  return c;
+}
+
 CriterionSpec flight(std::string_view key, B bound, std::string_view unit, std::string_view description,
                      double (*of)(const FlightReport&)) {
-  CriterionSpec c = described(key, bound, S::kFlight, unit, description);
-  c.of_flight = of;
-  return c;
+  return valued(key, bound, S::kFlight, unit, description, &CriterionSpec::of_flight, of);
 }
 
 // A count among `of` messages; not a number (a failed check) when there were none to count.
@@ -41,16 +50,12 @@ CriterionSpec relative(CriterionSpec c) {
 
 CriterionSpec setpoint(std::string_view key, S scope, std::string_view unit, std::string_view description,
                        double (*of)(const SetpointWindow&)) {
-  CriterionSpec c = described(key, B::kAtMost, scope, unit, description);
-  c.of_setpoint = of;
-  return c;
+  return valued(key, B::kAtMost, scope, unit, description, &CriterionSpec::of_setpoint, of);
 }
 
 CriterionSpec trajectory(std::string_view key, B bound, std::string_view unit, std::string_view description,
                          double (*of)(const PathTrackingReport&)) {
-  CriterionSpec c = described(key, bound, S::kTrajectory, unit, description);
-  c.of_trajectory = of;
-  return c;
+  return valued(key, bound, S::kTrajectory, unit, description, &CriterionSpec::of_trajectory, of);
 }
 
 // Recoveries from an airborne start or a throw (recovery.hpp): NaN, a failed check, without one.
@@ -86,10 +91,10 @@ void addAlwaysCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(always(flight("crashed", B::kAtMost, "-", "vehicle crashed (1) or not (0)",
                             [](const FlightReport& r) { return r.crashed ? 1.0 : 0.0; }), 0.0));
   // Every event of the scenario (scenario_events.hpp): what it played reached the log.
-  CriterionSpec event =
-      described("event_in_log", B::kAtLeast, S::kEvent, "-", "the scenario event's message in the log (1) or not (0)");
-  event.of_event = [](const ExpectedEvent& e) { return e.found() ? 1.0 : 0.0; };
-  c.push_back(always(event, 1.0));
+  c.push_back(always(valued("event_in_log", B::kAtLeast, S::kEvent, "-",
+                            "the scenario event's message in the log (1) or not (0)", &CriterionSpec::of_event,
+                            [](const ExpectedEvent& e) { return e.found() ? 1.0 : 0.0; }),
+                     1.0));
 }
 
 // Setpoints, jumps (Fig. 5) and pulls while holding a setpoint (Fig. 4).
@@ -104,9 +109,10 @@ void addSetpointCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(setpoint("hover_error", S::kSetpoint, "m", "steady error, mean over the window's last {hover_window}",
                        [](const SetpointWindow& w) { return w.steady_error; }));
   // Pulls while holding a setpoint (Fig. 4).
-  CriterionSpec pull = described("pull_return_time", B::kAtMost, S::kPull, "s",
-                                 "after release, back within {pull_return_error} of the setpoint and staying");
-  pull.of_pull = [](const PullWindow& p) { return p.return_time; };
+  const CriterionSpec pull =
+      valued("pull_return_time", B::kAtMost, S::kPull, "s",
+             "after release, back within {pull_return_error} of the setpoint and staying", &CriterionSpec::of_pull,
+             [](const PullWindow& p) { return p.return_time; });
   c.push_back(pull);
   CriterionSpec pull_overshoot = pull;
   pull_overshoot.key = "pull_return_overshoot";
@@ -136,10 +142,9 @@ void addFlightCriteria(std::vector<CriterionSpec>& c) {
                      [](const FlightReport& r) { return r.state_est_rate_hz; }));
   c.push_back(flight("max_tilt_deg", B::kAtMost, "deg", "largest tilt while airborne",
                      [](const FlightReport& r) { return r.max_tilt_deg; }));
-  CriterionSpec touchdown = described("touchdown_speed_max", B::kAtMost, S::kLanding, "m/s",
-                                      "after LAND, vertical speed at touchdown (none before the log ends: not landed)");
-  touchdown.of_landing = [](const Landing& l) { return l.touchdown_speed; };
-  c.push_back(touchdown);
+  c.push_back(valued("touchdown_speed_max", B::kAtMost, S::kLanding, "m/s",
+                     "after LAND, vertical speed at touchdown (none before the log ends: not landed)",
+                     &CriterionSpec::of_landing, [](const Landing& l) { return l.touchdown_speed; }));
   // Saturation where it happens (Saturation in flight_report.hpp), over the airborne flight.
   c.push_back(flight("thrust_demand_outside_max", B::kAtMost, "count",
                      "RATE_CMD whose thrust demand before the controller's clip left [c_min, c_max], or NaN",
@@ -182,10 +187,9 @@ void addTrajectoryCriteria(std::vector<CriterionSpec>& c) {
   c.push_back(trajectory("thrust_limit_violations_max", B::kAtMost, "count",
                          "thrust demands (before the controller's clip) outside the vehicle's [c_min, c_max], or NaN",
                          [](const PathTrackingReport& t) { return static_cast<double>(t.thrust_violations); }));
-  CriterionSpec path_return = described("path_return_time", B::kAtMost, S::kTrajectoryPull, "s",
-                                        "after release, back within {path_return_error} of the path and staying");
-  path_return.of_trajectory_pull = [](const PathPull& p) { return p.return_time; };
-  c.push_back(path_return);
+  c.push_back(valued("path_return_time", B::kAtMost, S::kTrajectoryPull, "s",
+                     "after release, back within {path_return_error} of the path and staying",
+                     &CriterionSpec::of_trajectory_pull, [](const PathPull& p) { return p.return_time; }));
 }
 
 // The table's order is the order of the checks in every report.

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "sdlqr/analysis/criteria.hpp"
 #include "sdlqr/analysis/flight_report.hpp"
@@ -227,46 +228,46 @@ std::string describeDisturbance(const Disturbance& d) {
   return text + format(" for %.2f s", d.duration);
 }
 
+// Each window's row, or in its place why it has none (its `missing`).
+template <typename Window, typename WriteRow>
+void writeWindows(const std::vector<Window>& windows, const char* indent, std::ostream& out, WriteRow write_row) {
+  for (const Window& w : windows) {
+    if (w.missing.empty()) {
+      write_row(w);
+    } else {
+      out << indent << w.missing << "\n";
+    }
+  }
+}
+
 void writeSetpoints(const FlightReport& r, std::ostream& out) {
   if (r.setpoints.empty()) return;
   char line[512];
   const std::string settle = "settle (<" + formatQuantity(r.settle_error, "m") + ")";
   std::snprintf(line, sizeof line, "  setpoint            size    %-14s  overshoot  steady error\n", settle.c_str());
   out << line;
-  for (const SetpointWindow& w : r.setpoints) {
-    if (!w.missing.empty()) {
-      out << "  " << w.missing << "\n";
-      continue;
-    }
+  writeWindows(r.setpoints, "  ", out, [&](const SetpointWindow& w) {
     std::snprintf(line, sizeof line, "  %-18s %5.2f m  %-14s  %7s  %s\n", w.label.c_str(), w.size,
                   format("%.2f s", w.settle_time).c_str(), w.is_jump ? format("%.1f %%", 100.0 * w.overshoot).c_str() : "-",
                   format("%.1f cm", 100.0 * w.steady_error).c_str());
     out << line;
-  }
+  });
 }
 
 void writePulls(const FlightReport& r, std::ostream& out) {
   char line[512];
-  for (const PullWindow& p : r.pulls) {
-    if (!p.missing.empty()) {
-      out << "  " << p.missing << "\n";
-      continue;
-    }
+  writeWindows(r.pulls, "  ", out, [&](const PullWindow& p) {
     std::snprintf(line, sizeof line, "  %-18s %s: pushed %.2f m away, back within %s after %s, %.0f %% past the setpoint\n",
                   p.label.c_str(), describeDisturbance(p.disturbance).c_str(), p.max_deviation,
                   formatQuantity(r.return_error, "m").c_str(), format("%.2f s", p.return_time).c_str(),
                   100.0 * p.return_overshoot);
     out << line;
-  }
+  });
 }
 
 void writeTrajectories(const FlightReport& r, std::ostream& out) {
   char line[512];
-  for (const PathTrackingReport& t : r.trajectories) {
-    if (!t.missing.empty()) {
-      out << "  " << t.missing << "\n";
-      continue;
-    }
+  writeWindows(r.trajectories, "  ", out, [&](const PathTrackingReport& t) {
     std::snprintf(line, sizeof line, "  %s (%s, %s, %d samples, %.2f m per lap): %s%s, %.2f laps\n", t.label.c_str(),
                   t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial", t.closed ? "closed" : "open",
                   t.samples, t.path_length, t.entry_time > 0.0 ? format("entered in %.2f s, ", t.entry_time).c_str() : "",
@@ -285,16 +286,12 @@ void writeTrajectories(const FlightReport& r, std::ostream& out) {
                   t.samples_passed, t.skipped.size(), t.worst_visit, t.saturation_percent, t.rate_saturation_percent,
                   t.thrust_saturation_percent, t.thrust_min, t.thrust_max, static_cast<long long>(t.thrust_violations));
     out << line;
-    for (const PathPull& p : t.pulls) {
-      if (!p.missing.empty()) {
-        out << "    " << p.missing << "\n";
-        continue;
-      }
+    writeWindows(t.pulls, "    ", out, [&](const PathPull& p) {
       std::snprintf(line, sizeof line, "    %s at %.2f s for %.2f s: %.2f m off the path at release, back on it after %s\n",
                     p.label.c_str(), p.start, p.release - p.start, p.distance_at_release, format("%.2f s", p.return_time).c_str());
       out << line;
-    }
-  }
+    });
+  });
 }
 
 // Recovery from an airborne start or a throw, and trajectories the guard aborted.
