@@ -91,14 +91,19 @@ TEST(OutputComparison, MissingAndExtraMessagesAreDifferences) {
   EXPECT_EQ(rate.first_difference, "RATE_CMD seq 1: recorded, not recomputed");
 }
 
+// The replayed controller ticks once past the recorded flight's last RATE_CMD (seq 5).
+void tickOnceMore(ReplayOutputs& o) {
+  RateCommand extra = o.rate_command.back();
+  extra.seq = 5;
+  o.rate_command.push_back(extra);
+}
+
 // The recorder stops a moment before the processes do: what the replay computes past a channel's
 // last recorded message is reported, not a difference. A channel with nothing recorded is.
 TEST(OutputComparison, MessagesRecomputedAfterTheRecordingEndedAreNotDifferences) {
   const RecordedFlight f = recording();
   ReplayOutputs o = outputsOf(f);
-  RateCommand extra = o.rate_command.back();
-  extra.seq = 5;
-  o.rate_command.push_back(extra);
+  tickOnceMore(o);
   const Comparison c = compareOutputs(f, o, 0.0);
   const ChannelComparison& rate = c.channels[1];
   ASSERT_EQ(rate.channel, "RATE_CMD");
@@ -127,9 +132,7 @@ TEST(OutputComparison, AForeignRecordedMessageDoesNotMoveTheRecordingsEnd) {
   RateCommand rogue = f.rate_command.back();
   rogue.seq = 1000000;
   f.rate_command.push_back(rogue);
-  RateCommand extra = o.rate_command.back();
-  extra.seq = 5;
-  o.rate_command.push_back(extra);
+  tickOnceMore(o);
   const Comparison whole = compareOutputs(f, o, 0.0);
   const ChannelComparison& rate = whole.channels[1];
   ASSERT_EQ(rate.channel, "RATE_CMD");

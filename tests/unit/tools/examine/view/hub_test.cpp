@@ -49,6 +49,12 @@ class Hub : public ::testing::Test {
     }
     return 0;
   }
+  // Client 1 connected and a SIM_TRUTH in the store, its channels advertised by a first tick.
+  void connectToATruth(const SimTruth& truth) {
+    hub.connect(1);
+    put(store, "SIM_TRUTH", truth, 1);
+    tick(0.0);
+  }
   void subscribe(ClientId id, uint32_t channel, uint32_t subscription) {
     const Json request = {{"op", "subscribe"}, {"subscriptions", {{{"id", subscription}, {"channelId", channel}}}}};
     EXPECT_TRUE(hub.onText(id, request.dump()).empty());
@@ -80,10 +86,8 @@ TEST_F(Hub, AdvertisesEachChannelWithItsSchemaAndTheVehicleInFoxglovesSchemas) {
 }
 
 TEST_F(Hub, AFrameCarriesOnlyTheNewestMessageOfEachSubscribedChannel) {
-  hub.connect(1);
   SimTruth truth;
-  put(store, "SIM_TRUTH", truth, 1);
-  tick(0.0);
+  connectToATruth(truth);
   const uint32_t channel = channelId(1, "SIM_TRUTH");
   ASSERT_NE(channel, 0u);
   subscribe(1, channel, 5);
@@ -102,10 +106,8 @@ TEST_F(Hub, AFrameCarriesOnlyTheNewestMessageOfEachSubscribedChannel) {
 }
 
 TEST_F(Hub, AClientThatStopsReadingGetsNothingQueuedThenTheNewest) {
-  hub.connect(1);
   SimTruth truth;
-  put(store, "SIM_TRUTH", truth, 1);
-  tick(0.0);
+  connectToATruth(truth);
   subscribe(1, channelId(1, "SIM_TRUTH"), 1);
   sinks[1].buffered = 10u << 20;  // 10 MiB unsent: it stopped reading
   for (int i = 0; i < 600; ++i) {
@@ -122,10 +124,8 @@ TEST_F(Hub, AClientThatStopsReadingGetsNothingQueuedThenTheNewest) {
 }
 
 TEST_F(Hub, TheSceneOfAVehicleFollowsItsTruthAtItsOwnPace) {
-  hub.connect(1);
   SimTruth truth;
-  put(store, "SIM_TRUTH", truth, 1);
-  tick(0.0);
+  connectToATruth(truth);
   subscribe(1, channelId(1, "foxglove/scene"), 1);
   subscribe(1, channelId(1, "foxglove/truth_tf"), 2);
   for (int i = 1; i <= 60; ++i) {  // one second of ticks, the truth moving

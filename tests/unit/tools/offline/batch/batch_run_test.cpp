@@ -18,34 +18,22 @@
 #include "sdlqr/batch/summary.hpp"
 #include "sdlqr/tables/csv.hpp"
 #include "batch_test_dir.hpp"
+#include "../work_folder.hpp"
 
 namespace sdlqr::batch {
 namespace {
 
+using ::sdlqr::test::fileText;
 using test::kDir;
 
-// Of this process: ctest runs each test case in a process of its own, several at once.
-const std::string kRunWork = SDLQR_BINARY_DIR "/batch_run_test/" + std::to_string(::getpid());
-
-std::string fileText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+const std::string kRunWork = ::sdlqr::test::processWorkFolder("batch_run_test");
+const auto* const kRemoveWorkFolder = ::sdlqr::test::removeAtExit(kRunWork);
 
 std::string freshDir(const std::string& name) {
   const std::string dir = kRunWork + "/" + name;
   EXPECT_EQ(std::system(("rm -rf '" + dir + "'").c_str()), 0);
   return dir;
 }
-
-// This process's folders go when it ends.
-class RemoveWorkFolder : public ::testing::Environment {
- public:
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + kRunWork + "'").c_str()), 0); }
-};
-const auto* const kRemoveWorkFolder = ::testing::AddGlobalTestEnvironment(new RemoveWorkFolder);
 
 RunResult runIn(const BatchContext& context, const std::string& dir, int jobs, Shard shard = {}) {
   RunOptions options;
@@ -130,7 +118,8 @@ TEST_F(SmallBatch, AKilledRunResumesWithoutFlyingAFinishedFlightAgain) {
     _exit(127);
   }
   // Kill it once at least three rows (and the header) have landed.
-  auto rows = [&] {
+  auto rows = [&]() -> std::ptrdiff_t {
+    if (!std::ifstream(journal).good()) return -1;  // not written yet
     const std::string text = fileText(journal);
     return std::count(text.begin(), text.end(), '\n') - 1;
   };

@@ -11,13 +11,16 @@
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/closedloop/closed_loop.hpp"
 #include "sdlqr/math/quaternion.hpp"
+#include "closedloop_test_flights.hpp"
 #include "closedloop_test_scenarios.hpp"
 #include "test_paths.hpp"
 
 namespace sdlqr {
 namespace {
 
+using ::sdlqr::test::expectEveryCheckPasses;
 using ::sdlqr::test::kSourceDir;
+using ::sdlqr::test::meanHeightError;
 using ::sdlqr::test::scenarioNamed;
 
 struct AgileFlight {
@@ -65,27 +68,6 @@ const analysis::Check* checkWithKey(const analysis::FlightReport& r, const std::
   return nullptr;
 }
 
-void expectEveryCheckPasses(const AgileFlight& f, const std::string& what) {
-  ASSERT_FALSE(f.report.checks.empty()) << what;
-  for (const analysis::Check& c : f.report.checks) {
-    EXPECT_TRUE(c.pass) << what << ": " << c.name << " = " << c.value << " (limit " << c.limit << ")";
-  }
-}
-
-// Mean height of the truth minus the reference's over [from, to] s.
-double meanHeightOffset(const logger::FlightLog& log, double from, double to) {
-  double sum = 0.0;
-  int n = 0;
-  for (const SimTruth& s : log.sim_truth.messages) {
-    const double t = 1e-6 * static_cast<double>(s.utime);
-    const auto i = log.reference.indexAtOrBefore(s.utime);
-    if (t < from || t > to || i < 0) continue;
-    sum += s.position[2] - position(log.reference[static_cast<size_t>(i)].x)[2];
-    ++n;
-  }
-  return n ? sum / n : NAN;
-}
-
 // GIVEN the 1.5 m circle at 3.25 m/s, which crashed sdlqr with two of three seeds when entered by a
 // velocity step from the hover at its start WHEN the entry is a transition THEN every check passes
 // with every seed, nothing is aborted, and the path is judged from where the entry handed over.
@@ -100,7 +82,7 @@ TEST(Agility, TheFastCircleEnteredThroughATransitionPassesWithEverySeed) {
               << " m, max " << t.path_error_max << " m, tilt " << f.report.max_tilt_deg << " deg\n";
     EXPECT_GT(t.entry_time, 1.0);
     EXPECT_EQ(f.guard_aborts, 0);
-    expectEveryCheckPasses(f, "seed " + std::to_string(seed));
+    expectEveryCheckPasses(f.report, "seed " + std::to_string(seed));
   }
 }
 
@@ -161,11 +143,11 @@ TEST(Agility, TheExtensionsPassThePapersExperimentsAndTheIntegralSettlesAHeavier
   for (const char* name : {"hover_jumps", "minsnap_pulled"}) {
     for (ControlLaw law : {ControlLaw::kSdlqrIntegral, ControlLaw::kSdlqrActuator}) {
       const mission::Scenario s = scenarioNamed(name);
-      expectEveryCheckPasses(flyWith(s, withLaw(s, law)), std::string(name) + " " + toString(law));
+      expectEveryCheckPasses(flyWith(s, withLaw(s, law)).report, std::string(name) + " " + toString(law));
     }
   }
   const mission::Scenario heavy = scenarioNamed("hover_jumps_mass_plus20");
-  expectEveryCheckPasses(flyWith(heavy, withLaw(heavy, ControlLaw::kSdlqrIntegral)), "heavier plant, sdlqr_integral");
+  expectEveryCheckPasses(flyWith(heavy, withLaw(heavy, ControlLaw::kSdlqrIntegral)).report, "heavier plant, sdlqr_integral");
   const AgileFlight paper = flyWith(heavy, withLaw(heavy, ControlLaw::kSdlqr));
   const analysis::Check* settle = checkWithKey(paper.report, "jump_settle_time");
   ASSERT_NE(settle, nullptr);
@@ -180,8 +162,8 @@ TEST(Agility, TheThrustGainFollowsTheHeavierPlantAndThePayloadDrop) {
   const mission::Scenario heavy = scenarioNamed("mass_plus20");
   const AgileFlight adaptive = flyWith(heavy, withLaw(heavy, ControlLaw::kSdlqrAdaptive));
   const AgileFlight paper = flyWith(heavy, withLaw(heavy, ControlLaw::kSdlqr));
-  const double sag_adaptive = meanHeightOffset(adaptive.log, 6.0, 9.0);
-  const double sag_paper = meanHeightOffset(paper.log, 6.0, 9.0);
+  const double sag_adaptive = meanHeightError(adaptive.log, 6.0, 9.0);
+  const double sag_paper = meanHeightError(paper.log, 6.0, 9.0);
   const auto at8s = adaptive.log.reference.indexAtOrBefore(8'000'000);
   ASSERT_GE(at8s, 0);
   const double theta = adaptive.log.reference[static_cast<size_t>(at8s)].thrust_gain;
@@ -198,14 +180,14 @@ TEST(Agility, TheThrustGainFollowsTheHeavierPlantAndThePayloadDrop) {
   double lowest = 1.0;
   for (const Reference& r : held.log.reference.messages) lowest = std::min(lowest, r.thrust_gain);
   EXPECT_EQ(lowest, 0.9) << "bounded";
-  EXPECT_LT(meanHeightOffset(held.log, 6.0, 9.0), -0.02) << "the bound leaves part of the sag";
+  EXPECT_LT(meanHeightError(held.log, 6.0, 9.0), -0.02) << "the bound leaves part of the sag";
 
   const mission::Scenario drop = scenarioNamed("payload_drop");
   const AgileFlight after_drop = flyWith(drop, withLaw(drop, ControlLaw::kSdlqrAdaptive));
   const AgileFlight paper_drop = flyWith(drop, withLaw(drop, ControlLaw::kSdlqr));
-  std::cout << "payload drop: height error 20.5-22 s, sdlqr_adaptive " << 100 * meanHeightOffset(after_drop.log, 20.5, 22.0)
-            << " cm, sdlqr " << 100 * meanHeightOffset(paper_drop.log, 20.5, 22.0) << " cm\n";
-  expectEveryCheckPasses(after_drop, "payload drop, sdlqr_adaptive");
+  std::cout << "payload drop: height error 20.5-22 s, sdlqr_adaptive " << 100 * meanHeightError(after_drop.log, 20.5, 22.0)
+            << " cm, sdlqr " << 100 * meanHeightError(paper_drop.log, 20.5, 22.0) << " cm\n";
+  expectEveryCheckPasses(after_drop.report, "payload drop, sdlqr_adaptive");
   const analysis::Check* hover = checkWithKey(paper_drop.report, "hover_error");
   ASSERT_NE(hover, nullptr);
   EXPECT_FALSE(paper_drop.report.passed()) << "sdlqr keeps the offset of the lighter plant";
@@ -224,7 +206,7 @@ TEST(Agility, TheRotorDragModelFliesTheAgileScaledMinSnap) {
   ASSERT_EQ(with_drag.report.trajectories.size(), 1u);
   std::cout << "drag modelled: path error RMS " << with_drag.report.trajectories[0].path_error_rms << " m, max "
             << with_drag.report.trajectories[0].path_error_max << " m\n";
-  expectEveryCheckPasses(with_drag, "agile minsnap_fast, drag modelled");
+  expectEveryCheckPasses(with_drag.report, "agile minsnap_fast, drag modelled");
 
   closedloop::StackConfig off = config;
   off.lqr.model_rotor_drag = false;

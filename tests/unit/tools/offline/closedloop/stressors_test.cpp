@@ -11,6 +11,7 @@
 #include "sdlqr/closedloop/closed_loop.hpp"
 #include "sdlqr/trajectory/closed_paths.hpp"
 #include "test_paths.hpp"
+#include "closedloop_test_flights.hpp"
 #include "closedloop_test_scenarios.hpp"
 
 namespace sdlqr {
@@ -18,7 +19,10 @@ namespace {
 
 using ::sdlqr::test::scenarioNamed;
 
+using ::sdlqr::test::expectEveryCheckPasses;
 using ::sdlqr::test::kSourceDir;
+using ::sdlqr::test::meanHeightError;
+using ::sdlqr::test::meanHorizontalError;
 
 struct StressedFlight {
   logger::FlightLog log;
@@ -45,41 +49,6 @@ const analysis::Check* checkNamed(const analysis::FlightReport& r, const std::st
   return nullptr;
 }
 
-void expectAllPass(const StressedFlight& f) {
-  for (const analysis::Check& c : f.report.checks) {
-    EXPECT_TRUE(c.pass) << f.report.scenario << ": " << c.name << " = " << c.value << " (limit " << c.limit << ")";
-  }
-}
-
-// Mean z error of the truth against the reference over [from, to] s.
-double meanHeightError(const logger::FlightLog& log, double from, double to) {
-  double sum = 0.0;
-  int n = 0;
-  for (const SimTruth& s : log.sim_truth.messages) {
-    const double t = 1e-6 * static_cast<double>(s.utime);
-    if (t < from || t > to) continue;
-    const auto i = log.reference.indexAtOrBefore(s.utime);
-    if (i < 0) continue;
-    sum += s.position[2] - position(log.reference[static_cast<size_t>(i)].x)[2];
-    ++n;
-  }
-  return n ? sum / n : NAN;
-}
-
-// Mean horizontal distance of the truth to the reference over [from, to] s.
-double meanHorizontalError(const logger::FlightLog& log, double from, double to) {
-  double sum = 0.0;
-  int n = 0;
-  for (const SimTruth& s : log.sim_truth.messages) {
-    const double t = 1e-6 * static_cast<double>(s.utime);
-    const auto i = log.reference.indexAtOrBefore(s.utime);
-    if (t < from || t > to || i < 0) continue;
-    sum += (s.position - position(log.reference[static_cast<size_t>(i)].x)).head<2>().norm();
-    ++n;
-  }
-  return n ? sum / n : NAN;
-}
-
 void printRecovery(const StressedFlight& f) {
   ASSERT_TRUE(f.report.recovery.has_value());
   const analysis::RecoveryReport& r = *f.report.recovery;
@@ -101,7 +70,7 @@ TEST(Stressors, MassMismatchChangesTheHoverMeasurably) {
   const double heavy_error = meanHeightError(b.log, 6.0, 9.0);
   std::cout << "hover z error, 6-9 s: nominal mass " << nominal_error << " m, +20 % mass " << heavy_error << " m\n";
   EXPECT_LT(heavy_error, nominal_error - 0.02);
-  expectAllPass(b);
+  expectEveryCheckPasses(b.report, b.report.scenario);
 }
 
 // The gusts are drawn from the scenario's seed: the same seed flies the same flight bit for bit,
@@ -133,7 +102,7 @@ TEST(Stressors, WindAndGustsRepeatForASeed) {
   std::cout << "wind_gusts: mean horizontal hold error 6-12 s " << windy_error << " m (calm " << calm_error
             << " m), seeds differ by up to " << largest_difference << " m\n";
   EXPECT_GT(windy_error, calm_error + 0.05);
-  expectAllPass(a);
+  expectEveryCheckPasses(a.report, a.report.scenario);
 }
 
 // 60, 120 and 180 degrees (upside down): every recovery criterion of the scenario passes (level
@@ -143,7 +112,7 @@ TEST(Stressors, AirborneStartsUpToUpsideDownRecover) {
     const StressedFlight f = fly(scenarioNamed(name));
     printRecovery(f);
     EXPECT_FALSE(f.report.crashed) << name;
-    expectAllPass(f);
+    expectEveryCheckPasses(f.report, f.report.scenario);
   }
 }
 
@@ -178,7 +147,7 @@ TEST(Stressors, ThrowIsDetectedArmedAndRecovered) {
   const StressedFlight f = fly(scenarioNamed("throw"));
   printRecovery(f);
   EXPECT_EQ(f.throws_detected, 1);
-  expectAllPass(f);
+  expectEveryCheckPasses(f.report, f.report.scenario);
 }
 
 // Negative: thrown without throw mode, nothing arms the motors: the throw checks fail.
@@ -215,7 +184,7 @@ TEST(Stressors, FeasibleFastPathsAreFlownAndNotAborted) {
     EXPECT_GT(t.laps, 1.0);
   }
   EXPECT_EQ(f.report.trajectory_aborts, 0);
-  expectAllPass(f);
+  expectEveryCheckPasses(f.report, f.report.scenario);
 }
 
 // A reference the vehicle cannot follow (a foreign TRAJECTORY whose samples claim rest and hover
@@ -328,7 +297,8 @@ TEST(Stressors, TheMissionRefusesAClockThatLeapsAhead) {
   EXPECT_LT(loop.mission().now(), 6'000'000) << "the mission's clock leapt";
   loop.run();
   EXPECT_EQ(loop.mission().now() / 1'000'000, static_cast<int64_t>(hover.duration)) << "to its end on the real clock";
-  expectAllPass(StressedFlight{loop.log(), analysis::analyzeFlight(loop.log(), hover), 0});
+  const analysis::FlightReport report = analysis::analyzeFlight(loop.log(), hover);
+  expectEveryCheckPasses(report, report.scenario);
 }
 
 // An infeasible path is refused when the scenario is loaded, with the report in one line naming

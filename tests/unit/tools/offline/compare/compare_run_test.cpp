@@ -17,28 +17,16 @@
 #include "sdlqr/compare/compare_report.hpp"
 #include "sdlqr/tables/csv.hpp"
 #include "compare_test_dir.hpp"
+#include "../work_folder.hpp"
 
 namespace sdlqr::compare {
 namespace {
 
+using ::sdlqr::test::fileText;
 using test::kDir;
 
-// Of this process: ctest runs each test case in a process of its own, several at once.
-const std::string kRunWork = SDLQR_BINARY_DIR "/compare_run_test/" + std::to_string(::getpid());
-
-std::string fileText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in.good()) << path;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-class RemoveWorkFolder : public ::testing::Environment {
- public:
-  void TearDown() override { EXPECT_EQ(std::system(("rm -rf '" + kRunWork + "'").c_str()), 0); }
-};
-const auto* const kRemoveWorkFolder = ::testing::AddGlobalTestEnvironment(new RemoveWorkFolder);
+const std::string kRunWork = ::sdlqr::test::processWorkFolder("compare_run_test");
+const auto* const kRemoveWorkFolder = ::sdlqr::test::removeAtExit(kRunWork);
 
 CompareResult runQuietly(const Benchmark& benchmark, int jobs) {
   CompareOptions options;
