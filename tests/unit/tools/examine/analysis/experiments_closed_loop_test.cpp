@@ -10,6 +10,7 @@
 #include "sdlqr/closedloop/closed_loop.hpp"
 #include "test_paths.hpp"
 #include "analysis_test_helpers.hpp"
+#include "../../offline/closedloop/closedloop_test_flights.hpp"
 
 namespace sdlqr {
 namespace {
@@ -18,19 +19,14 @@ using ::sdlqr::test::findCheck;
 
 using ::sdlqr::test::kSourceDir;
 
-struct Flight {
-  logger::FlightLog log;
-  analysis::FlightReport report;
-};
+using Flight = test::AnalyzedFlight;
 
 // `edit` changes the vehicle file's parameters before the flight.
 Flight fly(const std::string& name, void (*edit)(closedloop::StackConfig&) = nullptr) {
   const mission::Scenario scenario = mission::Scenario::load(kSourceDir + "/config/scenarios/" + name + ".yaml");
   closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);
   if (edit != nullptr) edit(config);
-  closedloop::RecordOptions record;
-  record.motor_command = true;  // the rotor saturation criteria count MOTOR_CMD
-  closedloop::ClosedLoop loop(config, scenario, record);
+  closedloop::ClosedLoop loop(config, scenario, test::motorCommandsRecorded());
   loop.run();
   Flight flight;
   flight.log = loop.log();
@@ -41,15 +37,9 @@ Flight fly(const std::string& name, void (*edit)(closedloop::StackConfig&) = nul
   return flight;
 }
 
-void expectEveryCheckPasses(const analysis::FlightReport& report) {
-  for (const analysis::Check& check : report.checks) {
-    EXPECT_TRUE(check.pass) << check.name << " = " << check.value << " (limit " << check.limit << ")";
-  }
-}
-
 TEST(Experiments, MinSnapFastStaysWithinTenCentimetresRms) {
   const Flight flight = fly("minsnap_fast");
-  expectEveryCheckPasses(flight.report);
+  test::expectEveryCheckPasses(flight.report, flight.report.scenario);
   ASSERT_EQ(flight.report.trajectories.size(), 1u);
   const analysis::PathTrackingReport& t = flight.report.trajectories[0];
   EXPECT_LT(t.path_error_rms, 0.10);  // issue 4
@@ -62,7 +52,7 @@ TEST(Experiments, MinSnapFastStaysWithinTenCentimetresRms) {
 
 TEST(Experiments, InfeasibleEllipseStaysStableThroughThreeLaps) {
   const Flight flight = fly("ellipse_infeasible");
-  expectEveryCheckPasses(flight.report);
+  test::expectEveryCheckPasses(flight.report, flight.report.scenario);
   ASSERT_EQ(flight.report.trajectories.size(), 1u);
   const analysis::PathTrackingReport& t = flight.report.trajectories[0];
   EXPECT_GE(t.laps, 3.0);
@@ -75,8 +65,8 @@ TEST(Experiments, InfeasibleEllipseStaysStableThroughThreeLaps) {
 TEST(Experiments, PulledSpatialSkipsNothingAndTemporalSkipsSamples) {
   const Flight spatial = fly("minsnap_pulled");
   const Flight temporal = fly("minsnap_pulled_temporal");
-  expectEveryCheckPasses(spatial.report);
-  expectEveryCheckPasses(temporal.report);
+  test::expectEveryCheckPasses(spatial.report, spatial.report.scenario);
+  test::expectEveryCheckPasses(temporal.report, temporal.report.scenario);
   ASSERT_EQ(spatial.report.trajectories.size(), 1u);
   ASSERT_EQ(temporal.report.trajectories.size(), 1u);
   const analysis::PathTrackingReport& s = spatial.report.trajectories[0];

@@ -18,23 +18,17 @@
 namespace sdlqr {
 namespace {
 
-using ::sdlqr::test::expectEveryCheckPasses;
 using ::sdlqr::test::kSourceDir;
-using ::sdlqr::test::meanHeightError;
 using ::sdlqr::test::scenarioNamed;
 
-struct AgileFlight {
-  logger::FlightLog log;
-  analysis::FlightReport report;
+struct AgileFlight : test::AnalyzedFlight {
   int64_t guard_aborts = 0;
   trajectory::GuardTrip trip = trajectory::GuardTrip::kNone;
   double final_thrust_gain = 0.0;
 };
 
 AgileFlight flyWith(const mission::Scenario& scenario, const closedloop::StackConfig& config) {
-  closedloop::RecordOptions record;
-  record.motor_command = true;  // the rotor saturation criteria count MOTOR_CMD
-  closedloop::ClosedLoop loop(config, scenario, record);
+  closedloop::ClosedLoop loop(config, scenario, test::motorCommandsRecorded());
   loop.run();
   AgileFlight f;
   f.log = loop.log();
@@ -82,7 +76,7 @@ TEST(Agility, TheFastCircleEnteredThroughATransitionPassesWithEverySeed) {
               << " m, max " << t.path_error_max << " m, tilt " << f.report.max_tilt_deg << " deg\n";
     EXPECT_GT(t.entry_time, 1.0);
     EXPECT_EQ(f.guard_aborts, 0);
-    expectEveryCheckPasses(f.report, "seed " + std::to_string(seed));
+    test::expectEveryCheckPasses(f.report, "seed " + std::to_string(seed));
   }
 }
 
@@ -143,11 +137,11 @@ TEST(Agility, TheExtensionsPassThePapersExperimentsAndTheIntegralSettlesAHeavier
   for (const char* name : {"hover_jumps", "minsnap_pulled"}) {
     for (ControlLaw law : {ControlLaw::kSdlqrIntegral, ControlLaw::kSdlqrActuator}) {
       const mission::Scenario s = scenarioNamed(name);
-      expectEveryCheckPasses(flyWith(s, withLaw(s, law)).report, std::string(name) + " " + toString(law));
+      test::expectEveryCheckPasses(flyWith(s, withLaw(s, law)).report, std::string(name) + " " + toString(law));
     }
   }
   const mission::Scenario heavy = scenarioNamed("hover_jumps_mass_plus20");
-  expectEveryCheckPasses(flyWith(heavy, withLaw(heavy, ControlLaw::kSdlqrIntegral)).report, "heavier plant, sdlqr_integral");
+  test::expectEveryCheckPasses(flyWith(heavy, withLaw(heavy, ControlLaw::kSdlqrIntegral)).report, "heavier plant, sdlqr_integral");
   const AgileFlight paper = flyWith(heavy, withLaw(heavy, ControlLaw::kSdlqr));
   const analysis::Check* settle = checkWithKey(paper.report, "jump_settle_time");
   ASSERT_NE(settle, nullptr);
@@ -162,8 +156,8 @@ TEST(Agility, TheThrustGainFollowsTheHeavierPlantAndThePayloadDrop) {
   const mission::Scenario heavy = scenarioNamed("mass_plus20");
   const AgileFlight adaptive = flyWith(heavy, withLaw(heavy, ControlLaw::kSdlqrAdaptive));
   const AgileFlight paper = flyWith(heavy, withLaw(heavy, ControlLaw::kSdlqr));
-  const double sag_adaptive = meanHeightError(adaptive.log, 6.0, 9.0);
-  const double sag_paper = meanHeightError(paper.log, 6.0, 9.0);
+  const double sag_adaptive = test::meanHeightError(adaptive.log, 6.0, 9.0);
+  const double sag_paper = test::meanHeightError(paper.log, 6.0, 9.0);
   const auto at8s = adaptive.log.reference.indexAtOrBefore(8'000'000);
   ASSERT_GE(at8s, 0);
   const double theta = adaptive.log.reference[static_cast<size_t>(at8s)].thrust_gain;
@@ -180,14 +174,14 @@ TEST(Agility, TheThrustGainFollowsTheHeavierPlantAndThePayloadDrop) {
   double lowest = 1.0;
   for (const Reference& r : held.log.reference.messages) lowest = std::min(lowest, r.thrust_gain);
   EXPECT_EQ(lowest, 0.9) << "bounded";
-  EXPECT_LT(meanHeightError(held.log, 6.0, 9.0), -0.02) << "the bound leaves part of the sag";
+  EXPECT_LT(test::meanHeightError(held.log, 6.0, 9.0), -0.02) << "the bound leaves part of the sag";
 
   const mission::Scenario drop = scenarioNamed("payload_drop");
   const AgileFlight after_drop = flyWith(drop, withLaw(drop, ControlLaw::kSdlqrAdaptive));
   const AgileFlight paper_drop = flyWith(drop, withLaw(drop, ControlLaw::kSdlqr));
-  std::cout << "payload drop: height error 20.5-22 s, sdlqr_adaptive " << 100 * meanHeightError(after_drop.log, 20.5, 22.0)
-            << " cm, sdlqr " << 100 * meanHeightError(paper_drop.log, 20.5, 22.0) << " cm\n";
-  expectEveryCheckPasses(after_drop.report, "payload drop, sdlqr_adaptive");
+  std::cout << "payload drop: height error 20.5-22 s, sdlqr_adaptive " << 100 * test::meanHeightError(after_drop.log, 20.5, 22.0)
+            << " cm, sdlqr " << 100 * test::meanHeightError(paper_drop.log, 20.5, 22.0) << " cm\n";
+  test::expectEveryCheckPasses(after_drop.report, "payload drop, sdlqr_adaptive");
   const analysis::Check* hover = checkWithKey(paper_drop.report, "hover_error");
   ASSERT_NE(hover, nullptr);
   EXPECT_FALSE(paper_drop.report.passed()) << "sdlqr keeps the offset of the lighter plant";
@@ -206,7 +200,7 @@ TEST(Agility, TheRotorDragModelFliesTheAgileScaledMinSnap) {
   ASSERT_EQ(with_drag.report.trajectories.size(), 1u);
   std::cout << "drag modelled: path error RMS " << with_drag.report.trajectories[0].path_error_rms << " m, max "
             << with_drag.report.trajectories[0].path_error_max << " m\n";
-  expectEveryCheckPasses(with_drag.report, "agile minsnap_fast, drag modelled");
+  test::expectEveryCheckPasses(with_drag.report, "agile minsnap_fast, drag modelled");
 
   closedloop::StackConfig off = config;
   off.lqr.model_rotor_drag = false;

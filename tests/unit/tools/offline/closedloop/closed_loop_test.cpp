@@ -10,6 +10,7 @@
 
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/closedloop/closed_loop.hpp"
+#include "closedloop_test_flights.hpp"
 #include "test_paths.hpp"
 
 namespace sdlqr {
@@ -17,9 +18,7 @@ namespace {
 
 using ::sdlqr::test::kSourceDir;
 
-struct Flight {
-  logger::FlightLog log;
-  analysis::FlightReport report;
+struct Flight : test::AnalyzedFlight {
   double wall_seconds = 0.0;
   double sim_seconds = 0.0;
 };
@@ -27,9 +26,7 @@ struct Flight {
 Flight fly(const std::string& scenario_file) {
   const mission::Scenario scenario = mission::Scenario::load(kSourceDir + "/config/scenarios/" + scenario_file);
   const closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);
-  closedloop::RecordOptions record;
-  record.motor_command = true;  // the rotor saturation criteria count MOTOR_CMD
-  closedloop::ClosedLoop loop(config, scenario, record);
+  closedloop::ClosedLoop loop(config, scenario, test::motorCommandsRecorded());
   const auto start = std::chrono::steady_clock::now();
   loop.run();
   Flight flight;

@@ -1,6 +1,6 @@
 #pragma once
-// What several tests measure alike on an in-process flight: the truth's mean error against the
-// reference over a window, and every check passing; a header, so the files of one test binary
+// What several tests record and measure alike on an in-process flight: MOTOR_CMD, the log and its
+// report, the truth's mean error against the reference over a window, and every check passing; a header, so the files of one test binary
 // (one translation unit) share it.
 
 #include <gtest/gtest.h>
@@ -9,9 +9,23 @@
 #include <string>
 
 #include "sdlqr/analysis/flight_report.hpp"
+#include "sdlqr/closedloop/closed_loop.hpp"
 #include "sdlqr/math/types.hpp"
 
 namespace sdlqr::test {
+
+// The rotor saturation criteria count MOTOR_CMD.
+inline closedloop::RecordOptions motorCommandsRecorded() {
+  closedloop::RecordOptions record;
+  record.motor_command = true;
+  return record;
+}
+
+// An in-process flight's log and the analysis of it.
+struct AnalyzedFlight {
+  logger::FlightLog log;
+  analysis::FlightReport report;
+};
 
 // Mean over [from, to] s of `error(truth, reference position)`, at every SIM_TRUTH with a reference.
 template <typename Error>

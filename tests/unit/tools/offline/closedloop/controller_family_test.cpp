@@ -9,6 +9,7 @@
 
 #include "sdlqr/analysis/flight_report.hpp"
 #include "sdlqr/closedloop/closed_loop.hpp"
+#include "closedloop_test_flights.hpp"
 #include "test_paths.hpp"
 #include "closedloop_test_scenarios.hpp"
 
@@ -25,13 +26,6 @@ closedloop::StackConfig configWithLaw(const mission::Scenario& scenario, Control
   return config;
 }
 
-// The rotor saturation criteria count MOTOR_CMD.
-closedloop::RecordOptions motorCommandsRecorded() {
-  closedloop::RecordOptions record;
-  record.motor_command = true;
-  return record;
-}
-
 analysis::FlightReport analyze(const closedloop::ClosedLoop& loop, const mission::Scenario& scenario,
                                const closedloop::StackConfig& config) {
   analysis::AnalysisOptions options;
@@ -44,7 +38,7 @@ analysis::FlightReport analyze(const closedloop::ClosedLoop& loop, const mission
 analysis::FlightReport fly(const mission::Scenario& scenario, const closedloop::StackConfig& config,
                            const VehicleParams* plant = nullptr) {
   const closedloop::Plant world{plant != nullptr ? *plant : config.vehicle, config.sim};
-  closedloop::ClosedLoop loop(config, world, scenario, motorCommandsRecorded());
+  closedloop::ClosedLoop loop(config, world, scenario, test::motorCommandsRecorded());
   loop.run();
   return analyze(loop, scenario, config);
 }
@@ -122,7 +116,7 @@ SwitchFlight flySwitch(ControlLaw to, double switch_time_s) {
   const mission::Scenario scenario = scenarioNamed("hover_jumps");
   closedloop::StackConfig config = configWithLaw(scenario, ControlLaw::kSdlqr);
   config.controller.switch_time_s = switch_time_s;
-  closedloop::ClosedLoop loop(config, scenario, motorCommandsRecorded());
+  closedloop::ClosedLoop loop(config, scenario, test::motorCommandsRecorded());
   SwitchFlight flight;
   bool switched = false, first_after = false;
   int64_t ticks = 0;

@@ -19,14 +19,9 @@ namespace {
 
 using ::sdlqr::test::scenarioNamed;
 
-using ::sdlqr::test::expectEveryCheckPasses;
 using ::sdlqr::test::kSourceDir;
-using ::sdlqr::test::meanHeightError;
-using ::sdlqr::test::meanHorizontalError;
 
-struct StressedFlight {
-  logger::FlightLog log;
-  analysis::FlightReport report;
+struct StressedFlight : test::AnalyzedFlight {
   int64_t throws_detected = 0;
 };
 
@@ -66,11 +61,11 @@ TEST(Stressors, MassMismatchChangesTheHoverMeasurably) {
   nominal.sim.plant = sim::PlantOverride();
   const StressedFlight a = fly(nominal);
   const StressedFlight b = fly(heavy);
-  const double nominal_error = meanHeightError(a.log, 6.0, 9.0);
-  const double heavy_error = meanHeightError(b.log, 6.0, 9.0);
+  const double nominal_error = test::meanHeightError(a.log, 6.0, 9.0);
+  const double heavy_error = test::meanHeightError(b.log, 6.0, 9.0);
   std::cout << "hover z error, 6-9 s: nominal mass " << nominal_error << " m, +20 % mass " << heavy_error << " m\n";
   EXPECT_LT(heavy_error, nominal_error - 0.02);
-  expectEveryCheckPasses(b.report, b.report.scenario);
+  test::expectEveryCheckPasses(b.report, b.report.scenario);
 }
 
 // The gusts are drawn from the scenario's seed: the same seed flies the same flight bit for bit,
@@ -97,12 +92,12 @@ TEST(Stressors, WindAndGustsRepeatForASeed) {
   mission::Scenario calm = windy;
   calm.sim.wind = sim::WindParams();
   const StressedFlight d = fly(calm);
-  const double windy_error = meanHorizontalError(a.log, 6.0, 12.0);
-  const double calm_error = meanHorizontalError(d.log, 6.0, 12.0);
+  const double windy_error = test::meanHorizontalError(a.log, 6.0, 12.0);
+  const double calm_error = test::meanHorizontalError(d.log, 6.0, 12.0);
   std::cout << "wind_gusts: mean horizontal hold error 6-12 s " << windy_error << " m (calm " << calm_error
             << " m), seeds differ by up to " << largest_difference << " m\n";
   EXPECT_GT(windy_error, calm_error + 0.05);
-  expectEveryCheckPasses(a.report, a.report.scenario);
+  test::expectEveryCheckPasses(a.report, a.report.scenario);
 }
 
 // 60, 120 and 180 degrees (upside down): every recovery criterion of the scenario passes (level
@@ -112,7 +107,7 @@ TEST(Stressors, AirborneStartsUpToUpsideDownRecover) {
     const StressedFlight f = fly(scenarioNamed(name));
     printRecovery(f);
     EXPECT_FALSE(f.report.crashed) << name;
-    expectEveryCheckPasses(f.report, f.report.scenario);
+    test::expectEveryCheckPasses(f.report, f.report.scenario);
   }
 }
 
@@ -147,7 +142,7 @@ TEST(Stressors, ThrowIsDetectedArmedAndRecovered) {
   const StressedFlight f = fly(scenarioNamed("throw"));
   printRecovery(f);
   EXPECT_EQ(f.throws_detected, 1);
-  expectEveryCheckPasses(f.report, f.report.scenario);
+  test::expectEveryCheckPasses(f.report, f.report.scenario);
 }
 
 // Negative: thrown without throw mode, nothing arms the motors: the throw checks fail.
@@ -184,7 +179,7 @@ TEST(Stressors, FeasibleFastPathsAreFlownAndNotAborted) {
     EXPECT_GT(t.laps, 1.0);
   }
   EXPECT_EQ(f.report.trajectory_aborts, 0);
-  expectEveryCheckPasses(f.report, f.report.scenario);
+  test::expectEveryCheckPasses(f.report, f.report.scenario);
 }
 
 // A reference the vehicle cannot follow (a foreign TRAJECTORY whose samples claim rest and hover
@@ -298,7 +293,7 @@ TEST(Stressors, TheMissionRefusesAClockThatLeapsAhead) {
   loop.run();
   EXPECT_EQ(loop.mission().now() / 1'000'000, static_cast<int64_t>(hover.duration)) << "to its end on the real clock";
   const analysis::FlightReport report = analysis::analyzeFlight(loop.log(), hover);
-  expectEveryCheckPasses(report, report.scenario);
+  test::expectEveryCheckPasses(report, report.scenario);
 }
 
 // An infeasible path is refused when the scenario is loaded, with the report in one line naming
