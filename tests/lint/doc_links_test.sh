@@ -6,15 +6,9 @@
 set -u
 root="$1" work="$2"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-check="/usr/bin/python3 $here/doc_links.py"
-failed=0
-if out="$($check "$root")"; then
-  echo "ok   the repository: $out"
-else
-  echo "FAIL: the README or docs/ point at what does not exist:"
-  echo "$out"
-  failed=1
-fi
+source "$here/../support/checker_test.sh"
+check=(/usr/bin/python3 "$here/doc_links.py")
+expect_repository_passes "the README or docs/ point at what does not exist" "${check[@]}" "$root"
 
 # negative RULE LINE: a copy of ./sdlqr, a docs/ page with a heading, config/ with one file, and a
 # README holding LINE; doc_links.py must exit 1 naming the rule on README.md's line 3.
@@ -24,19 +18,10 @@ negative() {
   printf '# Page\n\n## A section\n' >"$work/docs/page.md"
   : >"$work/config/quad.yaml"
   printf '# sdlqr\n\n%s\n\n[page](docs/page.md#a-section), `config/quad.yaml`, `./sdlqr demo`\n' "$2" >"$work/README.md"
-  local out status
-  out="$($check "$work")"
-  status=$?
-  if [ "$status" -eq 1 ] && grep -q "^README.md:3: $1 " <<<"$out"; then
-    echo "ok   (negative) $1 caught: $(grep "^README.md:3: $1 " <<<"$out")"
-  else
-    echo "FAIL (negative) $1 not caught (exit $status): $2"
-    echo "$out"
-    failed=1
-  fi
-  if [ "$(grep -c '^README.md' <<<"$out")" != 1 ]; then
+  expect_caught "$1" "^README.md:3: $1 " "${check[@]}" "$work"
+  if [ "$(grep -c '^README.md' <<<"$CAUGHT_OUT")" != 1 ]; then
     echo "FAIL (negative) $1: the page's valid link, file and command were flagged too:"
-    echo "$out"
+    echo "$CAUGHT_OUT"
     failed=1
   fi
 }

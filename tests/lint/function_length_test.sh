@@ -7,15 +7,9 @@
 set -u
 root="$1" work="$2"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-check="/usr/bin/python3 $here/function_length.py"
-failed=0
-if out="$($check "$root")"; then
-  echo "ok   the repository: $out"
-else
-  echo "FAIL: functions over 80 lines:"
-  echo "$out"
-  failed=1
-fi
+source "$here/../support/checker_test.sh"
+check=(/usr/bin/python3 "$here/function_length.py")
+expect_repository_passes "functions over 80 lines" "${check[@]}" "$root"
 
 # sample LINES: a .cpp in WORK_DIR with one function `longOne` whose head to closing brace spans
 # LINES lines, with '}' inside a string and a comment on the way, and a braced number with digit
@@ -35,16 +29,9 @@ sample() {
 }
 
 sample 81
-out="$($check "$work")"
-status=$?
-if [ "$status" -eq 1 ] && grep -q "^src/sample.cpp:2: function-too-long longOne is 81 lines" <<<"$out"; then
-  echo "ok   an 81-line function fails: $out"
-else
-  echo "FAIL: an 81-line function must fail naming function-too-long longOne (exit $status): $out"
-  failed=1
-fi
+expect_caught "an 81-line function" "^src/sample.cpp:2: function-too-long longOne is 81 lines" "${check[@]}" "$work"
 sample 80
-if out="$($check "$work")"; then
+if out="$("${check[@]}" "$work")"; then
   echo "ok   an 80-line function passes"
 else
   echo "FAIL: an 80-line function must pass: $out"

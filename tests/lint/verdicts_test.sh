@@ -5,24 +5,12 @@
 set -u
 root="$1" work="$2"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-if ! out="$(bash "$here/verdicts.sh" "$root")"; then
-  echo "FAIL: the repository's scripts hold a banned pattern:"
-  echo "$out"
-  exit 1
-fi
-echo "ok   the repository: no finding"
-failed=0
+source "$here/../support/checker_test.sh"
+expect_repository_passes "the repository's scripts hold a banned pattern" bash "$here/verdicts.sh" "$root"
 check() {  # RULE SCRIPT_TEXT: verdicts.sh on a tests/ folder holding only that script
   rm -rf "$work" && mkdir -p "$work/tests"
   printf '#!/usr/bin/env bash\n%s\n' "$2" >"$work/tests/sample.sh"
-  out="$(bash "$here/verdicts.sh" "$work")"
-  status=$?
-  if [ "$status" -eq 1 ] && grep -q "^tests/sample.sh:[0-9]*: $1: " <<<"$out"; then
-    echo "ok   (negative) $1 caught: $out"
-  else
-    echo "FAIL (negative) $1 not caught (exit $status): $2"
-    failed=1
-  fi
+  expect_caught "$1" "^tests/sample.sh:[0-9]*: $1: " bash "$here/verdicts.sh" "$work"
 }
 check or-true '"$root/scripts/launch" --build "$build" --log "$log" "$scenario" || true'
 check or-true 'cmd_run hover_jumps "${run_args[@]}" || true'
