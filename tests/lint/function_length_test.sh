@@ -7,9 +7,7 @@
 set -u
 root="$1" work="$2"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-source "$here/../support/checker_test.sh"
-check=(/usr/bin/python3 "$here/function_length.py")
-expect_repository_passes "functions over 80 lines" "${check[@]}" "$root"
+source "$here/../support/checker_test.sh" /usr/bin/python3 "$here/function_length.py"
 
 # sample LINES: a .cpp in WORK_DIR with one function `longOne` whose head to closing brace spans
 # LINES lines, with '}' inside a string and a comment on the way, and a braced number with digit
@@ -28,10 +26,11 @@ sample() {
   } >"$work/src/sample.cpp"
 }
 
+expect_repository_passes "functions over 80 lines" "$root"
 sample 81
-expect_caught "an 81-line function" "^src/sample.cpp:2: function-too-long longOne is 81 lines" "${check[@]}" "$work"
+expect_caught "an 81-line function" "^src/sample.cpp:2: function-too-long longOne is 81 lines" "$work"
 sample 80
-if out="$("${check[@]}" "$work")"; then
+if out="$(checker "$work")"; then
   echo "ok   an 80-line function passes"
 else
   echo "FAIL: an 80-line function must pass: $out"

@@ -5,13 +5,13 @@
 set -u
 root="$1" work="$2"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
-source "$here/../support/checker_test.sh"
-expect_repository_passes "the repository's scripts hold a banned pattern" bash "$here/verdicts.sh" "$root"
+source "$here/../support/checker_test.sh" bash "$here/verdicts.sh"
 check() {  # RULE SCRIPT_TEXT: verdicts.sh on a tests/ folder holding only that script
   rm -rf "$work" && mkdir -p "$work/tests"
   printf '#!/usr/bin/env bash\n%s\n' "$2" >"$work/tests/sample.sh"
-  expect_caught "$1" "^tests/sample.sh:[0-9]*: $1: " bash "$here/verdicts.sh" "$work"
+  expect_caught "$1" "^tests/sample.sh:[0-9]*: $1: " "$work"
 }
+expect_repository_passes "the repository's scripts hold a banned pattern" "$root"
 check or-true '"$root/scripts/launch" --build "$build" --log "$log" "$scenario" || true'
 check or-true 'cmd_run hover_jumps "${run_args[@]}" || true'
 check or-true '"$build/bin/sdlqr-analyze" "$log" --scenario "$scenario" >/dev/null || true'
