@@ -35,18 +35,31 @@ void handleAll(Node& node) {
   }
 }
 
+// The LCM encoding of a command, with room for a signature trailer after it when `trailer`.
+std::vector<uint8_t> encoded(const rate_cmd_t& message, bool trailer = false) {
+  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()) + (trailer ? kSignatureSize : 0));
+  message.encode(bytes.data(), 0, message.getEncodedSize());
+  return bytes;
+}
+
 // A memq bus is one Node's own: it hears what it publishes, and what is published on its LCM.
 struct Receiver {
   Receiver() : node("lowlevel", memq("QUAD")) {
     node.subscribe<rate_cmd_t>(channel::kRateCommand, [&](const rate_cmd_t& m) { handled.push_back(m.seq); }, 64);
   }
+  explicit Receiver(const BusKey& key) : Receiver() { node.setBusKey(key); }
+
+  // Bytes on QUAD/RATE_CMD straight from LCM, as a process that is not a Node would send them.
+  void publishRaw(const std::vector<uint8_t>& bytes) {
+    node.lcm().publish("QUAD/RATE_CMD", bytes.data(), static_cast<unsigned>(bytes.size()));
+  }
+
   Node node;
   std::vector<int64_t> handled;
 };
 
 TEST(NodeSigning, SignedMessagesReachTheHandlerWithTheirPayload) {
-  Receiver r;
-  r.node.setBusKey(keyOf(1));
+  Receiver r(keyOf(1));
   r.node.publish(channel::kRateCommand, command(1));
   r.node.publish(channel::kRateCommand, command(2));
   handleAll(r.node);
@@ -55,18 +68,15 @@ TEST(NodeSigning, SignedMessagesReachTheHandlerWithTheirPayload) {
 }
 
 TEST(NodeSigning, UnsignedAndForgedMessagesAreRejectedAndCountedByReason) {
-  Receiver r;
-  r.node.setBusKey(keyOf(1));
+  Receiver r(keyOf(1));
   // Unsigned: a well-formed command published by LCM directly (a process without the key).
-  const rate_cmd_t plain = command(5);
-  std::vector<uint8_t> bytes(static_cast<size_t>(plain.getEncodedSize()));
-  plain.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  r.node.lcm().publish("QUAD/RATE_CMD", bytes.data(), static_cast<unsigned>(bytes.size()));
+  std::vector<uint8_t> bytes = encoded(command(5));
+  r.publishRaw(bytes);
   // Forged: signed, with another key.
   BusSigner other(keyOf(2));
   bytes.resize(bytes.size() + kSignatureSize);
   other.sign("QUAD/RATE_CMD", bytes.data(), bytes.size() - kSignatureSize, {42, signatureTime(1'800'000'000'000'000)});
-  r.node.lcm().publish("QUAD/RATE_CMD", bytes.data(), static_cast<unsigned>(bytes.size()));
+  r.publishRaw(bytes);
   handleAll(r.node);
   EXPECT_TRUE(r.handled.empty());
   EXPECT_EQ(r.node.health().counter("reject.rate_cmd.unsigned"), 1);
@@ -76,8 +86,7 @@ TEST(NodeSigning, UnsignedAndForgedMessagesAreRejectedAndCountedByReason) {
 }
 
 TEST(NodeSigning, AReplayedSignedMessageIsRejected) {
-  Receiver r;
-  r.node.setBusKey(keyOf(1));
+  Receiver r(keyOf(1));
   std::vector<uint8_t> recorded;
   r.node.subscribeRaw("QUAD/RATE_CMD", [&](const std::string&, const void* data, uint32_t size, int64_t) {
     if (recorded.empty()) recorded.assign(static_cast<const uint8_t*>(data), static_cast<const uint8_t*>(data) + size);
@@ -88,7 +97,7 @@ TEST(NodeSigning, AReplayedSignedMessageIsRejected) {
   // The recorder got the bytes as sent: the trailer included.
   EXPECT_EQ(recorded.size(), static_cast<size_t>(command(1).getEncodedSize()) + kSignatureSize);
   // The same bytes again (a capture sent back without the key):
-  r.node.lcm().publish("QUAD/RATE_CMD", recorded.data(), static_cast<unsigned>(recorded.size()));
+  r.publishRaw(recorded);
   handleAll(r.node);
   EXPECT_EQ(r.handled, (std::vector<int64_t>{1}));
   EXPECT_EQ(r.node.health().counter("reject.rate_cmd.replayed"), 1);
@@ -97,10 +106,8 @@ TEST(NodeSigning, AReplayedSignedMessageIsRejected) {
 TEST(NodeSigning, WithoutAKeyTheSameInjectionIsHandled) {
   // The negative of the two tests above: an unsigned subscriber takes the unsigned command.
   Receiver r;
-  const rate_cmd_t plain = command(5);
-  std::vector<uint8_t> bytes(static_cast<size_t>(plain.getEncodedSize()));
-  plain.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
-  r.node.lcm().publish("QUAD/RATE_CMD", bytes.data(), static_cast<unsigned>(bytes.size()));
+  const std::vector<uint8_t> bytes = encoded(command(5));
+  r.publishRaw(bytes);
   handleAll(r.node);
   EXPECT_EQ(r.handled, (std::vector<int64_t>{5}));
   EXPECT_EQ(r.node.rejected(), 0);
@@ -108,21 +115,16 @@ TEST(NodeSigning, WithoutAKeyTheSameInjectionIsHandled) {
 
 TEST(NodeSigning, ANodeWithoutTheKeyStillDecodesSignedMessages) {
   Receiver r;  // no key: decodes what a signed publisher sends (its trailer ignored)
-  const rate_cmd_t message = command(3);
-  std::vector<uint8_t> bytes(static_cast<size_t>(message.getEncodedSize()) + kSignatureSize);
-  message.encode(bytes.data(), 0, message.getEncodedSize());
+  std::vector<uint8_t> bytes = encoded(command(3), true);
   BusSigner(keyOf(1)).sign("QUAD/RATE_CMD", bytes.data(), bytes.size() - kSignatureSize, {1, 1});
-  r.node.lcm().publish("QUAD/RATE_CMD", bytes.data(), static_cast<unsigned>(bytes.size()));
+  r.publishRaw(bytes);
   handleAll(r.node);
   EXPECT_EQ(r.handled, (std::vector<int64_t>{3}));
 }
 
 TEST(NodeSigning, ABridgeForwardsBytesAsHeardAndSignsForNobody) {
-  Receiver r;
-  r.node.setBusKey(keyOf(1));
-  const rate_cmd_t plain = command(5);
-  std::vector<uint8_t> bytes(static_cast<size_t>(plain.getEncodedSize()));
-  plain.encode(bytes.data(), 0, static_cast<int>(bytes.size()));
+  Receiver r(keyOf(1));
+  std::vector<uint8_t> bytes = encoded(command(5));
   // A forwarded unsigned message stays unsigned (a bridge with the key launders nothing) ...
   r.node.forwardEncoded("QUAD/RATE_CMD", bytes.data(), static_cast<int>(bytes.size()));
   handleAll(r.node);
@@ -134,9 +136,7 @@ TEST(NodeSigning, ABridgeForwardsBytesAsHeardAndSignsForNobody) {
                            {9, signatureTime(std::chrono::duration_cast<std::chrono::microseconds>(
                                    std::chrono::system_clock::now().time_since_epoch()).count())});
   r.node.forwardEncoded("QUAD/RATE_CMD", bytes.data(), static_cast<int>(bytes.size()));
-  const rate_cmd_t own = command(6);
-  std::vector<uint8_t> own_bytes(static_cast<size_t>(own.getEncodedSize()));
-  own.encode(own_bytes.data(), 0, static_cast<int>(own_bytes.size()));
+  const std::vector<uint8_t> own_bytes = encoded(command(6));
   r.node.publishEncoded("QUAD/RATE_CMD", own_bytes.data(), static_cast<int>(own_bytes.size()));
   handleAll(r.node);
   EXPECT_EQ(r.handled, (std::vector<int64_t>{5, 6}));
@@ -144,8 +144,7 @@ TEST(NodeSigning, ABridgeForwardsBytesAsHeardAndSignsForNobody) {
 }
 
 TEST(NodeSigning, SigningAndCheckingAllocateNothingOnceRunning) {
-  Receiver r;
-  r.node.setBusKey(keyOf(1));
+  Receiver r(keyOf(1));
   for (int64_t seq = 0; seq < 10; ++seq) {  // warm-up: channel names, heartbeat, buffers
     r.node.publish(channel::kRateCommand, command(seq));
     handleAll(r.node);

@@ -12,8 +12,6 @@ namespace {
 
 LqrParams loadText(const std::string& text) { return testing::loadSectionText<LqrParams>(text, "lqr"); }
 
-std::string errorKeyOf(const std::string& text) { return testing::keyBlamedBy([&] { loadText(text); }); }
-
 TEST(LqrParams, DefaultsAreThePapersAndValid) {
   const LqrParams p;
   EXPECT_TRUE(p.valid()) << p.invalidReason();
@@ -39,18 +37,20 @@ TEST(LqrParams, LoadsEveryKey) {
 }
 
 TEST(LqrParams, EveryInvalidFieldNamesItsKey) {
-  EXPECT_EQ(errorKeyOf("{r_diag: [1, 0, 1, 1]}"), "lqr.r_diag[1]");
-  EXPECT_EQ(errorKeyOf("{r_diag: [1, -5, 1, 1]}"), "lqr.r_diag[1]");
-  EXPECT_EQ(errorKeyOf("{r_diag: [1, 1, 1]}"), "lqr.r_diag");
-  EXPECT_EQ(errorKeyOf("{q_diag: [1,1,1,1,1,1,1,1,1,-1]}"), "lqr.q_diag[9]");
-  EXPECT_EQ(errorKeyOf("{q_diag: [1,1,1,1,1,1,1,1,1,.nan]}"), "lqr.q_diag[9]");
-  EXPECT_EQ(errorKeyOf("{dt: 0}"), "lqr.dt");
-  EXPECT_EQ(errorKeyOf("{dt: fast}"), "lqr.dt");
-  EXPECT_EQ(errorKeyOf("{c_min: 10, c_max: 5}"), "lqr.c_max");
-  EXPECT_EQ(errorKeyOf("{omega_max: -1}"), "lqr.omega_max");
-  EXPECT_EQ(errorKeyOf("{method: newton}"), "lqr.method");
-  EXPECT_EQ(errorKeyOf("{q_diagg: [1]}"), "lqr.q_diagg");
-  EXPECT_EQ(errorKeyOf("{tolerance: 2}"), "lqr.tolerance");
+  testing::expectKeysBlamed(loadText, {
+      {"{r_diag: [1, 0, 1, 1]}", "lqr.r_diag[1]"},
+      {"{r_diag: [1, -5, 1, 1]}", "lqr.r_diag[1]"},
+      {"{r_diag: [1, 1, 1]}", "lqr.r_diag"},
+      {"{q_diag: [1,1,1,1,1,1,1,1,1,-1]}", "lqr.q_diag[9]"},
+      {"{q_diag: [1,1,1,1,1,1,1,1,1,.nan]}", "lqr.q_diag[9]"},
+      {"{dt: 0}", "lqr.dt"},
+      {"{dt: fast}", "lqr.dt"},
+      {"{c_min: 10, c_max: 5}", "lqr.c_max"},
+      {"{omega_max: -1}", "lqr.omega_max"},
+      {"{method: newton}", "lqr.method"},
+      {"{q_diagg: [1]}", "lqr.q_diagg"},
+      {"{tolerance: 2}", "lqr.tolerance"},
+  });
 }
 
 TEST(LqrParams, InvalidReasonCatchesProgrammaticChanges) {

@@ -34,21 +34,17 @@ Command command(CommandType type, const Vec3& position) {
   return c;
 }
 
-TEST(ControllerAllocation, TicksAndSolvesAllocateNothing) {
-  const LqrParams lqr;
-  StateDependentLqr controller(lqr, ControllerParams{});
-  gains::GainScheduler scheduler(lqr, 10.0);
-  StateDependentLqr::Tick tick;
-  controller.onStateEstimate(estimateAt(0, Vec3::Zero()), tick);
-  controller.handleCommand(command(CommandType::kTakeoff, Vec3(0, 0, 1)));
-  const Trajectory fast = trajectory::sampleTrajectory(trajectory::paperMinSnapFast(trajectory::TrajectoryParams{}),
-                                                       0.1, lqr.gravity);
-  ASSERT_GT(fast.samples.size(), 50u);
+// A controller taken off toward (0, 0, 1) beside its gain solver.
+class ControllerAllocation : public ::testing::Test {
+ protected:
+  ControllerAllocation() {
+    controller.onStateEstimate(estimateAt(0, Vec3::Zero()), tick);
+    controller.handleCommand(command(CommandType::kTakeoff, Vec3(0, 0, 1)));
+  }
 
-  int64_t ticks = 0;
-  int64_t solves = 0;
-  const sdlqr::testing::AllocationCounter counter;
-  auto fly = [&](int64_t from, int64_t to, bool with_gains) {
+  // 250 Hz estimates on a slow loop at 1 m from `from` to `to` [us]: each to the controller, and to
+  // the gain solver when it is due and with_gains (its gains then to the controller).
+  void fly(int64_t from, int64_t to, bool with_gains = true) {
     for (int64_t utime = from; utime < to; utime += 4000) {
       const double t = 1e-6 * static_cast<double>(utime);
       const StateEstimate e = estimateAt(utime, Vec3(0.3 * std::sin(t), 0.2 * std::cos(t), 1.0));
@@ -64,7 +60,22 @@ TEST(ControllerAllocation, TicksAndSolvesAllocateNothing) {
         ++ticks;
       }
     }
-  };
+  }
+
+  const LqrParams lqr;
+  StateDependentLqr controller{lqr, ControllerParams{}};
+  gains::GainScheduler scheduler{lqr, 10.0};
+  StateDependentLqr::Tick tick;
+  int64_t ticks = 0;
+  int64_t solves = 0;
+};
+
+TEST_F(ControllerAllocation, TicksAndSolvesAllocateNothing) {
+  const Trajectory fast = trajectory::sampleTrajectory(trajectory::paperMinSnapFast(trajectory::TrajectoryParams{}),
+                                                       0.1, lqr.gravity);
+  ASSERT_GT(fast.samples.size(), 50u);
+
+  const sdlqr::testing::AllocationCounter counter;
   fly(4000, 3'000'000, true);      // take-off and hold with fresh gains
   fly(3'000'000, 5'000'000, false);  // gains stop: stale, then the fallback hover K
   const long hover_allocations = counter.count();
@@ -91,29 +102,7 @@ TEST(ControllerAllocation, TicksAndSolvesAllocateNothing) {
 
 // Every law of the family, switched in through PARAMS (with its bumpless transfer), its solver's
 // model in the scheduler too (the extensions' 12- and 10-state solves).
-TEST(ControllerAllocation, EveryLawTicksAndSolvesWithoutAllocating) {
-  const LqrParams lqr;
-  StateDependentLqr controller(lqr, ControllerParams{});
-  gains::GainScheduler scheduler(lqr, 10.0);
-  StateDependentLqr::Tick tick;
-  controller.onStateEstimate(estimateAt(0, Vec3::Zero()), tick);
-  controller.handleCommand(command(CommandType::kTakeoff, Vec3(0, 0, 1)));
-  int64_t ticks = 0, solves = 0;
-  auto fly = [&](int64_t from, int64_t to) {
-    for (int64_t utime = from; utime < to; utime += 4000) {
-      const double t = 1e-6 * static_cast<double>(utime);
-      const StateEstimate e = estimateAt(utime, Vec3(0.3 * std::sin(t), 0.2 * std::cos(t), 1.0));
-      GainSet gains;
-      if (scheduler.due(e) && scheduler.solve(e, gains) == SolveStatus::kOk) {
-        controller.setGains(gains);
-        ++solves;
-      }
-      if (controller.onStateEstimate(e, tick)) {
-        scheduler.setReference(tick.reference);
-        ++ticks;
-      }
-    }
-  };
+TEST_F(ControllerAllocation, EveryLawTicksAndSolvesWithoutAllocating) {
   fly(4000, 3'000'000);
   const sdlqr::testing::AllocationCounter counter;
   int64_t utime = 3'000'000;
@@ -137,7 +126,7 @@ TEST(ControllerAllocation, EveryLawTicksAndSolvesWithoutAllocating) {
   EXPECT_GE(controller.status().law_switches, 5);
 }
 
-TEST(ControllerAllocation, TheCounterSeesAllocations) {
+TEST_F(ControllerAllocation, TheCounterSeesAllocations) {
   EXPECT_GE(sdlqr::testing::allocationsOfOneVector(), 2);
 }
 

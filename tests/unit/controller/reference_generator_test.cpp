@@ -19,11 +19,8 @@ using test::command;
 
 StateEstimate referenceEstimate(double t, const Vec3& p, const Vec3& v = Vec3::Zero(),
                          EstimatorStatus status = EstimatorStatus::kOk) {
-  StateEstimate e;
-  e.utime = static_cast<int64_t>(t * 1e6);
-  e.position = p;
+  StateEstimate e = test::estimate(t, p, status);
   e.velocity = v;
-  e.status = status;
   return e;
 }
 

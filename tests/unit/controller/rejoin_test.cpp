@@ -8,6 +8,7 @@
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/reference_generator.hpp"
 #include "sdlqr/controller/state_dependent_lqr.hpp"
+#include "controller_test_commands.hpp"
 #include "sdlqr/math/model.hpp"
 
 namespace sdlqr::controller {
@@ -15,21 +16,15 @@ namespace {
 
 StateEstimate rejoinEstimate(double t, const Vec3& p, double yaw = 0.0,
                          EstimatorStatus status = EstimatorStatus::kOk) {
-  StateEstimate e;
-  e.utime = static_cast<int64_t>(t * 1e6);
-  e.position = p;
+  StateEstimate e = test::estimate(t, p, status);
   e.orientation = quat::fromYaw(yaw);
-  e.status = status;
   return e;
 }
 
 Command command(CommandType type, int64_t seq, const Vec3& position = Vec3::Zero(), double yaw = 0.0) {
-  Command c;
+  Command c = test::command(type, position, yaw);
   c.seq = seq;
   c.utime = seq * 1000;
-  c.command = type;
-  c.position = position;
-  c.yaw = yaw;
   return c;
 }
 

@@ -37,9 +37,11 @@ void takeOffAndHold(StateDependentLqr& controller, double yaw = 0.0) {
   controller.handleCommand(hold);
 }
 
-TEST(StateDependentLqr, TicksExactlyEvery10msFromTheLastOfA250HzEstimateBeforeTheTick) {
-  const LqrParams lqr;
-  StateDependentLqr controller(lqr, ControllerParams{});
+// Feeds 1 s of 250 Hz estimates at (0, 0, 1), from 20 ms on, to a controller that took off and
+// holds; calls check(the estimate's utime, the tick, the previous tick's utime or -1) on each tick.
+// Returns the number of ticks.
+template <class Check>
+int ticksOverOneSecond(StateDependentLqr& controller, Check check) {
   takeOffAndHold(controller);
   StateDependentLqr::Tick tick;
   int ticks = 0;
@@ -47,6 +49,16 @@ TEST(StateDependentLqr, TicksExactlyEvery10msFromTheLastOfA250HzEstimateBeforeTh
   for (int64_t utime = 20000; utime < 1020000; utime += 4000) {
     if (!controller.onStateEstimate(estimateAt(utime, Vec3(0, 0, 1)), tick)) continue;
     ++ticks;
+    check(utime, tick, last);
+    last = tick.command.utime;
+  }
+  return ticks;
+}
+
+TEST(StateDependentLqr, TicksExactlyEvery10msFromTheLastOfA250HzEstimateBeforeTheTick) {
+  const LqrParams lqr;
+  StateDependentLqr controller(lqr, ControllerParams{});
+  const int ticks = ticksOverOneSecond(controller, [](int64_t utime, const StateDependentLqr::Tick& tick, int64_t last) {
     EXPECT_EQ(tick.command.utime % 10000, 0) << "on the 10 ms grid";
     EXPECT_EQ(tick.command.state_seq, utime / 4000) << "computed from this estimate";
     EXPECT_GE(tick.command.utime, utime);
@@ -55,8 +67,7 @@ TEST(StateDependentLqr, TicksExactlyEvery10msFromTheLastOfA250HzEstimateBeforeTh
     if (last >= 0) {
       EXPECT_EQ(tick.command.utime - last, 10000);
     }
-    last = tick.command.utime;
-  }
+  });
   EXPECT_EQ(ticks, 100);
   EXPECT_EQ(controller.status().predicted_ticks, 50) << "every other tick falls between two estimates";
 }
@@ -66,20 +77,13 @@ TEST(StateDependentLqr, WithoutPredictionTicksOnTheFirstEstimateAtOrAfterTheTick
   ControllerParams params;
   params.max_prediction_s = 0.0;
   StateDependentLqr controller(lqr, params);
-  takeOffAndHold(controller);
-  StateDependentLqr::Tick tick;
-  int ticks = 0;
-  int64_t last = -1;
-  for (int64_t utime = 20000; utime < 1020000; utime += 4000) {
-    if (!controller.onStateEstimate(estimateAt(utime, Vec3(0, 0, 1)), tick)) continue;
-    ++ticks;
+  const int ticks = ticksOverOneSecond(controller, [](int64_t utime, const StateDependentLqr::Tick& tick, int64_t last) {
     EXPECT_EQ(tick.command.utime, utime);
     if (last >= 0) {
       EXPECT_GE(tick.command.utime - last, 8000);
       EXPECT_LE(tick.command.utime - last, 12000);
     }
-    last = tick.command.utime;
-  }
+  });
   EXPECT_EQ(ticks, 100);
   EXPECT_EQ(controller.status().predicted_ticks, 0);
 }

@@ -53,6 +53,13 @@ class HoverFixture : public ::testing::Test {
     return events_[i].vio;
   }
 
+  // The same events up to until_utime to a filter and its twin, which will not see the bad inputs
+  // that follow: what the filter must still equal. Returns the index of the first event not fed.
+  size_t feedBoth(Estimator& estimator, Estimator& twin, int64_t until_utime) const {
+    feedUntil(twin, events_, 0, until_utime);
+    return feedUntil(estimator, events_, 0, until_utime);
+  }
+
   SensorSimulator sensors_;
   std::vector<SensorEvent> events_;
 };
@@ -61,8 +68,7 @@ TEST_F(HoverFixture, RejectsOutOfOrderTooOldAndFuturePosesWithoutTouchingTheStat
   // GIVEN a converged filter 3 s into a hover, and a twin that will not see the bad poses
   Estimator estimator{EstimatorParams()};
   Estimator twin{EstimatorParams()};
-  const size_t now = feedUntil(estimator, events_, 0, 3'000'000);
-  feedUntil(twin, events_, 0, 3'000'000);
+  const size_t now = feedBoth(estimator, twin, 3'000'000);
   const VioPose last = lastPoseBefore(now);
   const int64_t imu_now = estimator.stateUtime();
 
@@ -103,8 +109,7 @@ TEST_F(HoverFixture, RejectsMalformedPosesWithoutTouchingTheState) {
   // GIVEN a converged filter and a twin
   Estimator estimator{EstimatorParams()};
   Estimator twin{EstimatorParams()};
-  const size_t now = feedUntil(estimator, events_, 0, 3'000'000);
-  feedUntil(twin, events_, 0, 3'000'000);
+  const size_t now = feedBoth(estimator, twin, 3'000'000);
   VioPose good = lastPoseBefore(now);
   good.utime = estimator.stateUtime();  // newer than the last fused, inside the history
 
@@ -135,8 +140,7 @@ TEST_F(HoverFixture, GatesAPoseThatJumpsAway) {
   // GIVEN a converged filter
   Estimator estimator{EstimatorParams()};
   Estimator twin{EstimatorParams()};
-  const size_t now = feedUntil(estimator, events_, 0, 3'000'000);
-  feedUntil(twin, events_, 0, 3'000'000);
+  const size_t now = feedBoth(estimator, twin, 3'000'000);
 
   // WHEN a pose 0.5 m away from the others arrives
   VioPose jump = lastPoseBefore(now);
@@ -188,8 +192,7 @@ TEST_F(HoverFixture, OutOfRangeAndBackwardImuSamplesAreRejected) {
   // GIVEN a running filter
   Estimator estimator{EstimatorParams()};
   Estimator twin{EstimatorParams()};
-  const size_t now = feedUntil(estimator, events_, 0, 2'000'000);
-  feedUntil(twin, events_, 0, 2'000'000);
+  const size_t now = feedBoth(estimator, twin, 2'000'000);
   ImuSample sample = events_[now].imu;
 
   // WHEN samples arrive with a 50 rad/s gyro, a 200 m/s^2 accel, an old and a duplicate timestamp

@@ -11,8 +11,6 @@ namespace {
 
 EstimatorParams loadText(const std::string& text) { return testing::loadSectionText<EstimatorParams>(text, "estimator"); }
 
-std::string errorKeyOf(const std::string& text) { return testing::keyBlamedBy([&] { loadText(text); }); }
-
 TEST(EstimatorParams, DefaultsAreValidAndMatchTheAgreedSensorModel) {
   const EstimatorParams p;
   EXPECT_TRUE(p.valid()) << p.invalidReason();
@@ -73,22 +71,24 @@ TEST(EstimatorParams, LoadsEveryKey) {
 }
 
 TEST(EstimatorParams, BadValuesNameTheirKey) {
-  EXPECT_EQ(errorKeyOf("{gyro_noise_density: 0}"), "estimator.gyro_noise_density");
-  EXPECT_EQ(errorKeyOf("{accel_bias_random_walk: -1}"), "estimator.accel_bias_random_walk");
-  EXPECT_EQ(errorKeyOf("{output_rate: 300}"), "estimator.output_rate");  // 3333.3 us is not whole
-  EXPECT_EQ(errorKeyOf("{output_rate: 0}"), "estimator.output_rate");
-  EXPECT_EQ(errorKeyOf("{history_length: 0.1}"), "estimator.history_length");  // shorter than VIO latency + margin
-  EXPECT_EQ(errorKeyOf("{vio_timeout: 0.5, reinit_after: 0.4}"), "estimator.reinit_after");
-  EXPECT_EQ(errorKeyOf("{gate_chi2: 0}"), "estimator.gate_chi2");
-  EXPECT_EQ(errorKeyOf("{accel_range: 100, accel_clip_level: 120}"), "estimator.accel_clip_level");  // never seen
-  EXPECT_EQ(errorKeyOf("{clip_velocity_std: 0}"), "estimator.clip_velocity_std");
-  EXPECT_EQ(errorKeyOf("{reinit_after: 1.0, vio_reset_after: 1.0}"), "estimator.vio_reset_after");
-  EXPECT_EQ(errorKeyOf("{vio_reset_after: -0.3}"), "estimator.vio_reset_after");
-  EXPECT_EQ(errorKeyOf("{quaternion_norm_tolerance: 0.7}"), "estimator.quaternion_norm_tolerance");
-  EXPECT_EQ(errorKeyOf("{imu_time_reset_count: 0}"), "estimator.imu_time_reset_count");
-  EXPECT_EQ(errorKeyOf("{gravity: .nan}"), "estimator.gravity");
-  EXPECT_EQ(errorKeyOf("{output_rate: fast}"), "estimator.output_rate");
-  EXPECT_EQ(errorKeyOf("{history_lenght: 0.2}"), "estimator.history_lenght");
+  testing::expectKeysBlamed(loadText, {
+      {"{gyro_noise_density: 0}", "estimator.gyro_noise_density"},
+      {"{accel_bias_random_walk: -1}", "estimator.accel_bias_random_walk"},
+      {"{output_rate: 300}", "estimator.output_rate"},  // 3333.3 us is not whole
+      {"{output_rate: 0}", "estimator.output_rate"},
+      {"{history_length: 0.1}", "estimator.history_length"},  // shorter than VIO latency + margin
+      {"{vio_timeout: 0.5, reinit_after: 0.4}", "estimator.reinit_after"},
+      {"{gate_chi2: 0}", "estimator.gate_chi2"},
+      {"{accel_range: 100, accel_clip_level: 120}", "estimator.accel_clip_level"},  // never seen
+      {"{clip_velocity_std: 0}", "estimator.clip_velocity_std"},
+      {"{reinit_after: 1.0, vio_reset_after: 1.0}", "estimator.vio_reset_after"},
+      {"{vio_reset_after: -0.3}", "estimator.vio_reset_after"},
+      {"{quaternion_norm_tolerance: 0.7}", "estimator.quaternion_norm_tolerance"},
+      {"{imu_time_reset_count: 0}", "estimator.imu_time_reset_count"},
+      {"{gravity: .nan}", "estimator.gravity"},
+      {"{output_rate: fast}", "estimator.output_rate"},
+      {"{history_lenght: 0.2}", "estimator.history_lenght"},
+  });
 }
 
 TEST(EstimatorParams, TheVehicleFileSectionLoads) {

@@ -20,6 +20,15 @@ uint64_t bitsOf(double v) {
   return bits;
 }
 
+// The cells of the first record of a CSV text; a failure naming the reader's error when it has none.
+std::vector<std::string> firstRecordOf(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> cells;
+  std::string error;
+  EXPECT_TRUE(readCsvRecord(in, &cells, &error)) << error;
+  return cells;
+}
+
 TEST(Csv, DoublesRoundTripBitForBit) {
   std::mt19937_64 rng(7);
   std::vector<double> values = {0.1, -0.0, 1e-320, std::numeric_limits<double>::max(),
@@ -59,10 +68,7 @@ TEST(Csv, NanAndIntegersRoundTrip) {
   writer.integer(std::numeric_limits<int64_t>::max());
   writer.real32(0.1f);
   writer.endRow();
-  std::istringstream in(out.str());
-  std::vector<std::string> cells;
-  std::string error;
-  ASSERT_TRUE(readCsvRecord(in, &cells, &error));
+  const std::vector<std::string> cells = firstRecordOf(out.str());
   ASSERT_EQ(cells.size(), 4u);
   double nan = 0.0;
   ASSERT_TRUE(parseValue(cells[0], nan));
@@ -125,12 +131,10 @@ TEST(Csv, VariableArraysBecomeOneJsonCell) {
   writer.endArray();
   writer.endRow();
 
-  std::istringstream in(out.str());
-  std::vector<std::string> cells;
-  std::string error;
-  ASSERT_TRUE(readCsvRecord(in, &cells, &error));
+  const std::vector<std::string> cells = firstRecordOf(out.str());
   ASSERT_EQ(cells.size(), 4u);
   EXPECT_EQ(cells[1], "[[0.5,Infinity],[NaN,-2]]");
+  std::string error;
   JsonDocument grid;
   ASSERT_TRUE(parseJson(cells[1], &grid, &error)) << error;
   ASSERT_TRUE(checkArray(grid, 2, "grid", &error));

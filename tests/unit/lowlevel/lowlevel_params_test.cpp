@@ -22,8 +22,6 @@ LowlevelParams loadText(const std::string& yaml) {
   return LowlevelParams::load(ConfigReader(YAML::Load(yaml), "").child("lowlevel"));
 }
 
-std::string errorKey(const std::string& yaml) { return testing::keyBlamedBy([&] { loadText(yaml); }); }
-
 TEST(LowlevelParams, DefaultsAreValid) {
   const LowlevelParams params;
   EXPECT_TRUE(params.valid()) << params.invalidReason();
@@ -56,16 +54,17 @@ TEST(LowlevelParams, ValuesAreRead) {
 }
 
 TEST(LowlevelParams, ErrorsNameTheFullKey) {
-  EXPECT_EQ(errorKey("lowlevel:\n  idle_thrust: -1\n"), "lowlevel.idle_thrust");
-  EXPECT_EQ(errorKey("lowlevel:\n  bogus: 1\n"), "lowlevel.bogus");
-  EXPECT_EQ(errorKey("lowlevel:\n  failsafe:\n    descnt_rate: 1\n"), "lowlevel.failsafe.descnt_rate");
-  EXPECT_EQ(errorKey("lowlevel:\n  rate_control:\n    p: [1, -2, 3]\n"), "lowlevel.rate_control.p[1]");
-  EXPECT_EQ(errorKey("lowlevel:\n  rate_control:\n    p: [1, 2]\n"), "lowlevel.rate_control.p");
-  EXPECT_EQ(errorKey("lowlevel:\n  dt_min: 0.5\n"), "lowlevel.dt_min");
-  EXPECT_EQ(errorKey("lowlevel:\n  failsafe:\n    impact_rest_time: 1.0\n"), "lowlevel.failsafe.impact_rest_time");
-  EXPECT_EQ(errorKey("lowlevel:\n  ground_detector:\n    landed_thrust_ratio: 1.2\n"),
-            "lowlevel.ground_detector.landed_thrust_ratio");
-  EXPECT_EQ(errorKey("lowlevel:\n  input_limits:\n    max_gyro: .nan\n"), "lowlevel.input_limits.max_gyro");
+  testing::expectKeysBlamed(loadText, {
+      {"lowlevel:\n  idle_thrust: -1\n", "lowlevel.idle_thrust"},
+      {"lowlevel:\n  bogus: 1\n", "lowlevel.bogus"},
+      {"lowlevel:\n  failsafe:\n    descnt_rate: 1\n", "lowlevel.failsafe.descnt_rate"},
+      {"lowlevel:\n  rate_control:\n    p: [1, -2, 3]\n", "lowlevel.rate_control.p[1]"},
+      {"lowlevel:\n  rate_control:\n    p: [1, 2]\n", "lowlevel.rate_control.p"},
+      {"lowlevel:\n  dt_min: 0.5\n", "lowlevel.dt_min"},
+      {"lowlevel:\n  failsafe:\n    impact_rest_time: 1.0\n", "lowlevel.failsafe.impact_rest_time"},
+      {"lowlevel:\n  ground_detector:\n    landed_thrust_ratio: 1.2\n", "lowlevel.ground_detector.landed_thrust_ratio"},
+      {"lowlevel:\n  input_limits:\n    max_gyro: .nan\n", "lowlevel.input_limits.max_gyro"},
+  });
 }
 
 // The RATE_CMD body-rate bound is the stack's one (validation.max_body_rate), not a lowlevel key.

@@ -13,8 +13,6 @@ namespace {
 
 SimParams loadText(const std::string& text) { return testing::loadSectionText<SimParams>(text, "sim"); }
 
-std::string errorKeyOf(const std::string& text) { return testing::keyBlamedBy([&] { loadText(text); }); }
-
 TEST(SimParams, DefaultsAreTheAgreedSensorModelAndValid) {
   const SimParams p;
   EXPECT_TRUE(p.valid()) << p.invalidReason();
@@ -81,32 +79,34 @@ TEST(SimParams, LoadsNestedSections) {
 }
 
 TEST(SimParams, EveryInvalidValueNamesItsKey) {
-  EXPECT_EQ(errorKeyOf("{bogus: 1}"), "sim.bogus");
-  EXPECT_EQ(errorKeyOf("{imu: {gyro_noise: 1}}"), "sim.imu.gyro_noise");
-  EXPECT_EQ(errorKeyOf("{physics_rate_hz: 3000}"), "sim.physics_rate_hz");  // 333.3 us period
-  EXPECT_EQ(errorKeyOf("{physics_rate_hz: 500}"), "sim.physics_rate_hz");  // RK4 at >= 1 kHz
-  EXPECT_EQ(errorKeyOf("{imu: {accel_range: 15}}"), "sim.imu.accel_range");
-  EXPECT_EQ(errorKeyOf("{imu: {gyro_range: 0}}"), "sim.imu.gyro_range");
-  EXPECT_EQ(errorKeyOf("{truth_rate_hz: 300}"), "sim.truth_rate_hz");
-  EXPECT_EQ(errorKeyOf("{imu: {rate_hz: 300}}"), "sim.imu.rate_hz");
-  EXPECT_EQ(errorKeyOf("{imu: {accel_noise_density: -1}}"), "sim.imu.accel_noise_density");
-  EXPECT_EQ(errorKeyOf("{vio: {rate_hz: 0}}"), "sim.vio.rate_hz");
-  EXPECT_EQ(errorKeyOf("{vio: {latency_min_s: 0.06}}"), "sim.vio.latency_max_s");
-  EXPECT_EQ(errorKeyOf("{vio: {latency_min_s: 0.0, latency_max_s: 0.04}}"), "sim.vio.latency_max_s");  // reorders
-  EXPECT_EQ(errorKeyOf("{vio: {rate_hz: 400, latency_min_s: 0.05, latency_max_s: 0.05}}"), "sim.vio.latency_max_s");
-  EXPECT_EQ(errorKeyOf("{vio: {position_std: .nan}}"), "sim.vio.position_std");
-  EXPECT_EQ(errorKeyOf("{battery: {initial_charge: 1.2}}"), "sim.battery.initial_charge");
-  EXPECT_EQ(errorKeyOf("{battery: {cell_count: 0}}"), "sim.battery.cell_count");
-  EXPECT_EQ(errorKeyOf("{battery: {capacity_mah: 0}}"), "sim.battery.capacity_mah");
-  EXPECT_EQ(errorKeyOf("{battery: {enabled: maybe}}"), "sim.battery.enabled");
-  EXPECT_EQ(errorKeyOf("{ground: {crash_speed: 0}}"), "sim.ground.crash_speed");
-  EXPECT_EQ(errorKeyOf("{ground: {crash_tilt: 4}}"), "sim.ground.crash_tilt");
-  EXPECT_EQ(errorKeyOf("{disturbance: {max_force: -1}}"), "sim.disturbance.max_force");
-  EXPECT_EQ(errorKeyOf("{initial_position: [0, 0, -1]}"), "sim.initial_position");
-  EXPECT_EQ(errorKeyOf("{initial_position: [0, 0]}"), "sim.initial_position");
-  EXPECT_EQ(errorKeyOf("{seed: -3}"), "sim.seed");
-  EXPECT_EQ(errorKeyOf("{gravity: 0}"), "sim.gravity");
-  EXPECT_EQ(errorKeyOf("{imu: 5}"), "sim.imu");
+  testing::expectKeysBlamed(loadText, {
+      {"{bogus: 1}", "sim.bogus"},
+      {"{imu: {gyro_noise: 1}}", "sim.imu.gyro_noise"},
+      {"{physics_rate_hz: 3000}", "sim.physics_rate_hz"},  // 333.3 us period
+      {"{physics_rate_hz: 500}", "sim.physics_rate_hz"},  // RK4 at >= 1 kHz
+      {"{imu: {accel_range: 15}}", "sim.imu.accel_range"},
+      {"{imu: {gyro_range: 0}}", "sim.imu.gyro_range"},
+      {"{truth_rate_hz: 300}", "sim.truth_rate_hz"},
+      {"{imu: {rate_hz: 300}}", "sim.imu.rate_hz"},
+      {"{imu: {accel_noise_density: -1}}", "sim.imu.accel_noise_density"},
+      {"{vio: {rate_hz: 0}}", "sim.vio.rate_hz"},
+      {"{vio: {latency_min_s: 0.06}}", "sim.vio.latency_max_s"},
+      {"{vio: {latency_min_s: 0.0, latency_max_s: 0.04}}", "sim.vio.latency_max_s"},  // reorders
+      {"{vio: {rate_hz: 400, latency_min_s: 0.05, latency_max_s: 0.05}}", "sim.vio.latency_max_s"},
+      {"{vio: {position_std: .nan}}", "sim.vio.position_std"},
+      {"{battery: {initial_charge: 1.2}}", "sim.battery.initial_charge"},
+      {"{battery: {cell_count: 0}}", "sim.battery.cell_count"},
+      {"{battery: {capacity_mah: 0}}", "sim.battery.capacity_mah"},
+      {"{battery: {enabled: maybe}}", "sim.battery.enabled"},
+      {"{ground: {crash_speed: 0}}", "sim.ground.crash_speed"},
+      {"{ground: {crash_tilt: 4}}", "sim.ground.crash_tilt"},
+      {"{disturbance: {max_force: -1}}", "sim.disturbance.max_force"},
+      {"{initial_position: [0, 0, -1]}", "sim.initial_position"},
+      {"{initial_position: [0, 0]}", "sim.initial_position"},
+      {"{seed: -3}", "sim.seed"},
+      {"{gravity: 0}", "sim.gravity"},
+      {"{imu: 5}", "sim.imu"},
+  });
 }
 
 }  // namespace

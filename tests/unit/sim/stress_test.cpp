@@ -19,14 +19,20 @@ SimStress stressFrom(const std::string& yaml) {
   return SimStress::load(ConfigReader(YAML::Load(yaml), "sim"));
 }
 
+// At rest at 5 m, the rotors spun up to the hover thrust of the vehicle file's mass and the motors
+// armed at it: whatever moves the vehicle then is the stressor's doing.
+void hoverAt5m(Simulator& sim, const VehicleParams& v) {
+  sim.setBodyState(test::airborne(Vec3(0, 0, 5)), hoverThrust(v));
+  sim.setMotorCommand(armed(hoverThrust(v)));
+}
+
 // GIVEN hover thrust for the file's mass WHEN the true mass is 20 % more THEN the vehicle starts
 // sinking at g (1 - 1/1.2), as Newton says.
 TEST(PlantOverride, HeavierPlantSinksAtTheMissingThrust) {
   const VehicleParams v;
   SimStress stress = stressFrom("{plant: {mass_scale: 1.2}}");
   Simulator sim(v, idealParams(), 1, stress);
-  sim.setBodyState(test::airborne(Vec3(0, 0, 5)), hoverThrust(v));
-  sim.setMotorCommand(armed(hoverThrust(v)));
+  hoverAt5m(sim, v);
   sim.step();  // from rest: no rotor drag yet
   const double expected = -kDefaultGravity * (1.0 - 1.0 / 1.2);
   EXPECT_NEAR(sim.acceleration().z(), expected, 1e-3);
@@ -37,8 +43,7 @@ TEST(PlantOverride, HeavierPlantSinksAtTheMissingThrust) {
 TEST(PayloadDrop, TheLighterPlantClimbsFromTheDropOn) {
   const VehicleParams v;
   Simulator sim(v, idealParams(), 1, stressFrom("{payload_drop: {at: 0.5, mass_scale: 0.85}}"));
-  sim.setBodyState(test::airborne(Vec3(0, 0, 5)), hoverThrust(v));
-  sim.setMotorCommand(armed(hoverThrust(v)));
+  hoverAt5m(sim, v);
   while (sim.utime() < 500000) {
     sim.step();
     EXPECT_NEAR(sim.acceleration().z(), 0.0, 1e-9) << "before the drop";
@@ -50,8 +55,7 @@ TEST(PayloadDrop, TheLighterPlantClimbsFromTheDropOn) {
 TEST(PlantOverride, ThrustCoefficientScalesTheProducedThrust) {
   const VehicleParams v;
   Simulator sim(v, idealParams(), 1, stressFrom("{plant: {thrust_scale: 0.8}}"));
-  sim.setBodyState(test::airborne(Vec3(0, 0, 5)), hoverThrust(v));
-  sim.setMotorCommand(armed(hoverThrust(v)));
+  hoverAt5m(sim, v);
   sim.step();
   EXPECT_NEAR(sim.rotorThrust().sum(), 0.8 * hoverThrust(v).sum(), 1e-12);
 }
@@ -89,8 +93,7 @@ TEST(PlantOverride, DefaultsFlyBitForBitAsWithout) {
 TEST(Wind, SteadyWindPushesDownwind) {
   const VehicleParams v;
   Simulator sim(v, idealParams(), 1, stressFrom("{wind: {steady: [3, 0, 0]}}"));
-  sim.setBodyState(test::airborne(Vec3(0, 0, 5)), hoverThrust(v));
-  sim.setMotorCommand(armed(hoverThrust(v)));
+  hoverAt5m(sim, v);
   sim.step();
   // -m D (v - w) at hover rotor speed: m 0.3 1/s 3 m/s downwind.
   EXPECT_NEAR(sim.acceleration().x(), v.rotor_drag.x() * 3.0, 1e-3);

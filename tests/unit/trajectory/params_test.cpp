@@ -14,8 +14,6 @@ namespace {
 
 TrajectoryParams loadText(const std::string& text) { return testing::loadSectionText<TrajectoryParams>(text, "trajectory"); }
 
-std::string errorKeyOf(const std::string& text) { return testing::keyBlamedBy([&] { loadText(text); }); }
-
 TEST(TrajectoryParams, DefaultsAreThePapersAndValid) {
   const TrajectoryParams p;
   EXPECT_TRUE(p.valid()) << p.invalidReason();
@@ -46,18 +44,20 @@ TEST(TrajectoryParams, LoadsEveryKey) {
 }
 
 TEST(TrajectoryParams, EveryInvalidFieldNamesItsKey) {
-  EXPECT_EQ(errorKeyOf("{sample_dt: 0}"), "trajectory.sample_dt");
-  EXPECT_EQ(errorKeyOf("{check_dt: 0.5}"), "trajectory.check_dt");  // coarser than the samples
-  EXPECT_EQ(errorKeyOf("{laps: 0}"), "trajectory.laps");
-  EXPECT_EQ(errorKeyOf("{laps: 1.5}"), "trajectory.laps");
-  EXPECT_EQ(errorKeyOf("{periodic: 3}"), "trajectory.periodic");
-  EXPECT_EQ(errorKeyOf("{fast_v_max: -3}"), "trajectory.fast_v_max");
-  EXPECT_EQ(errorKeyOf("{slow_v_max: .nan}"), "trajectory.slow_v_max");
-  EXPECT_EQ(errorKeyOf("{ellipse_speed: 0}"), "trajectory.ellipse_speed");
-  EXPECT_EQ(errorKeyOf("{ellipse_samples: 2}"), "trajectory.ellipse_samples");
-  EXPECT_EQ(errorKeyOf("{max_position_jump: 0}"), "trajectory.max_position_jump");
-  EXPECT_EQ(errorKeyOf("{accel_mismatch_max: -1}"), "trajectory.accel_mismatch_max");
-  EXPECT_EQ(errorKeyOf("{v_max: 3}"), "trajectory.v_max");  // unknown key
+  testing::expectKeysBlamed(loadText, {
+      {"{sample_dt: 0}", "trajectory.sample_dt"},
+      {"{check_dt: 0.5}", "trajectory.check_dt"},  // coarser than the samples
+      {"{laps: 0}", "trajectory.laps"},
+      {"{laps: 1.5}", "trajectory.laps"},
+      {"{periodic: 3}", "trajectory.periodic"},
+      {"{fast_v_max: -3}", "trajectory.fast_v_max"},
+      {"{slow_v_max: .nan}", "trajectory.slow_v_max"},
+      {"{ellipse_speed: 0}", "trajectory.ellipse_speed"},
+      {"{ellipse_samples: 2}", "trajectory.ellipse_samples"},
+      {"{max_position_jump: 0}", "trajectory.max_position_jump"},
+      {"{accel_mismatch_max: -1}", "trajectory.accel_mismatch_max"},
+      {"{v_max: 3}", "trajectory.v_max"},  // unknown key
+  });
 }
 
 TEST(TrajectoryParams, VehicleFileSectionLoads) {
@@ -71,10 +71,6 @@ TEST(TrajectoryParams, VehicleFileSectionLoads) {
 WaypointSpec waypointsFromYaml(const std::string& text) {
   const YAML::Node node = YAML::Load(text);
   return loadWaypointSpec(ConfigReader(node, ""), node);
-}
-
-std::string waypointErrorKey(const std::string& text) {
-  return testing::keyBlamedBy([&] { waypointsFromYaml(text); });
 }
 
 TEST(WaypointFile, YamlWaypoints) {
@@ -91,24 +87,23 @@ TEST(WaypointFile, YamlWaypoints) {
 }
 
 TEST(WaypointFile, YamlErrorsNameTheKey) {
-  EXPECT_EQ(waypointErrorKey("{periodic: true}"), "waypoints");
-  EXPECT_EQ(waypointErrorKey("{waypoints: [[0, 0, 1]]}"), "waypoints");
-  EXPECT_EQ(waypointErrorKey("{waypoints: [[0, 0, 1], [1, 1]]}"), "waypoints[1]");
-  EXPECT_EQ(waypointErrorKey("{waypoints: [[0, 0, 1], [1, x, 1]]}"), "waypoints[1][1]");
-  EXPECT_EQ(waypointErrorKey("{waypoints: [[0, 0, 1], [1, .inf, 1]]}"), "waypoints[1][1]");
-  EXPECT_EQ(waypointErrorKey("{waypoints: [[0, 0, 1], [1, 1, 1, 0.3]]}"), "waypoints[1]");
-  EXPECT_EQ(waypointErrorKey("{waypoints: [[0, 0, 1], [1, 1, 1]], v_max: 0}"), "v_max");
-  EXPECT_EQ(waypointErrorKey("{waypoints: [[0, 0, 1], [1, 1, 1]], speed: 2}"), "speed");
+  testing::expectKeysBlamed(waypointsFromYaml, {
+      {"{periodic: true}", "waypoints"},
+      {"{waypoints: [[0, 0, 1]]}", "waypoints"},
+      {"{waypoints: [[0, 0, 1], [1, 1]]}", "waypoints[1]"},
+      {"{waypoints: [[0, 0, 1], [1, x, 1]]}", "waypoints[1][1]"},
+      {"{waypoints: [[0, 0, 1], [1, .inf, 1]]}", "waypoints[1][1]"},
+      {"{waypoints: [[0, 0, 1], [1, 1, 1, 0.3]]}", "waypoints[1]"},
+      {"{waypoints: [[0, 0, 1], [1, 1, 1]], v_max: 0}", "v_max"},
+      {"{waypoints: [[0, 0, 1], [1, 1, 1]], speed: 2}", "speed"},
+  });
 }
 
 std::string waypointCsvError(const std::string& text) {
-  std::istringstream in(text);
-  try {
+  return testing::messageThrownBy<TrajectoryFileError>([&] {
+    std::istringstream in(text);
     parseWaypointCsv(in, "w.csv");
-  } catch (const TrajectoryFileError& e) {
-    return e.what();
-  }
-  return "<no error>";
+  });
 }
 
 TEST(WaypointFile, CsvWaypoints) {
