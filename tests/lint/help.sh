@@ -67,7 +67,7 @@ for sub in $bench_subcommands; do
 done
 
 # A test's own programs are not the product's: peers, checkers and the gtest binaries.
-test_programs=$(grep -rhoP 'add_executable\(\K[A-Za-z0-9_-]+' "$(dirname "$script")/tests" 2>/dev/null | sort -u)
+test_programs=$(grep -rhoP '(add_executable|sdlqr_test_program)\(\K[A-Za-z0-9_-]+' "$(dirname "$script")/tests" 2>/dev/null | sort -u)
 executables=0
 for exe in "$bin_dir"/*; do
   [ -f "$exe" ] && [ -x "$exe" ] || continue
