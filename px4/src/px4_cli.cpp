@@ -10,7 +10,9 @@ namespace sdlqr::px4 {
 
 namespace {
 
-void addLinkOptions(ArgParser& parser, LinkOptions* o, const char* url_help) {
+// The options of every process on a MAVLink link: the process's own (bus, vehicle, config), then the link's.
+void addProcessAndLinkOptions(ArgParser& parser, ProcessOptions* process, LinkOptions* o, const char* url_help) {
+  addProcessOptions(parser, process);
   parser.addOption("--mavlink", &o->mavlink_url, "URL", url_help);
   parser.addOption("--mavlink-key", &o->key_path, "FILE",
                    "sign every frame and accept only frames signed with this key (64 hex digits, mode 0600; "
@@ -18,7 +20,11 @@ void addLinkOptions(ArgParser& parser, LinkOptions* o, const char* url_help) {
   parser.addOption("--link-id", &o->link_id, "N", "MAVLink signing link id, 0-255 (default 0)");
 }
 
-void checkLinkOptions(const LinkOptions& o) {
+// Parses the command line of a process on a MAVLink link (their exit codes are the same) and checks
+// the link's options.
+void parseLinkCommandLine(ArgParser& parser, const LinkOptions& o, int argc, const char* const* argv) {
+  parser.setEpilog("Exit codes: 0 stopped (SIGINT/SIGTERM), 2 bad option, configuration or key, 1 runtime error.");
+  parser.parseOrExit(argc, argv);
   if (o.link_id < 0 || o.link_id > 255) throw std::invalid_argument("--link-id: must be in [0, 255]");
 }
 
@@ -31,10 +37,9 @@ BridgeCommandLine parseBridgeCommandLine(int argc, const char* const* argv) {
                    "The stack as a PX4 companion computer (docs/px4.md): MAVLink 2 to PX4 in offboard mode.\n"
                    "In: RATE_CMD, COMMAND.  Out: STATE_EST, SIM_CLOCK (the vehicle's clock), IMU, HEARTBEAT;\n"
                    "to PX4 SET_ATTITUDE_TARGET (body rates, normalized thrust), commands, our HEARTBEAT.");
-  addProcessOptions(parser, &o.process);
-  addLinkOptions(parser, &o.link,
-                 "udp://[HOST]:PORT (listen; default udp://:14540, PX4's offboard port), "
-                 "udpout://HOST:PORT[:BIND] or serial:DEVICE:BAUD (e.g. serial:/dev/ttyACM0:921600)");
+  addProcessAndLinkOptions(parser, &o.process, &o.link,
+                           "udp://[HOST]:PORT (listen; default udp://:14540, PX4's offboard port), "
+                           "udpout://HOST:PORT[:BIND] or serial:DEVICE:BAUD (e.g. serial:/dev/ttyACM0:921600)");
   parser.addFlag("--bench", &o.bench,
                  "props-off bench test: print the odometry read and the setpoints RATE_CMD would send, twice a "
                  "second; never arm, ask a mode or send a setpoint");
@@ -45,9 +50,7 @@ BridgeCommandLine parseBridgeCommandLine(int argc, const char* const* argv) {
                    "uptime would make a scenario's events all due at once)");
   parser.addOption("--identify-hover", &o.identify_log, "LOG",
                    "fit px4.thrust.hover_throttle to the hover of a flight log (docs/px4.md) and exit");
-  parser.setEpilog("Exit codes: 0 stopped (SIGINT/SIGTERM), 2 bad option, configuration or key, 1 runtime error.");
-  parser.parseOrExit(argc, argv);
-  checkLinkOptions(o.link);
+  parseLinkCommandLine(parser, o.link, argc, argv);
   if (clock != "vehicle" && clock != "start") throw std::invalid_argument("--clock: expected vehicle or start, got '" + clock + "'");
   o.clock_from_start = clock == "start";
   return o;
@@ -61,16 +64,13 @@ EmulatorCommandLine parseEmulatorCommandLine(int argc, const char* const* argv) 
                    "bodyrate loop behind a MAVLink 2 endpoint that behaves as PX4 documents for offboard mode.\n"
                    "In: DISTURBANCE.  Out: SIM_TRUTH, MOTOR_CMD (for the log), HEARTBEAT; MAVLink as PX4's\n"
                    "onboard link. Owns the simulation clock.");
-  addProcessOptions(parser, &o.process);
-  addLinkOptions(parser, &o.link,
-                 "where the companion listens: udpout://HOST:PORT[:BIND] (default udpout://127.0.0.1:14540:14580, "
-                 "as PX4 SITL), udp://[HOST]:PORT or serial:DEVICE:BAUD");
+  addProcessAndLinkOptions(parser, &o.process, &o.link,
+                           "where the companion listens: udpout://HOST:PORT[:BIND] (default "
+                           "udpout://127.0.0.1:14540:14580, as PX4 SITL), udp://[HOST]:PORT or serial:DEVICE:BAUD");
   parser.addOption("--scenario", &o.scenario_path, "FILE", "scenario whose `sim:` key changes the simulated world");
   parser.addOption("--seed", &o.seed, "N", "noise seed, >= 0 (default: sim.seed of the config)");
   parser.addOption("--rate", &o.rate, "FACTOR", "simulated seconds per wall second (default 1)");
-  parser.setEpilog("Exit codes: 0 stopped (SIGINT/SIGTERM), 2 bad option, configuration or key, 1 runtime error.");
-  parser.parseOrExit(argc, argv);
-  checkLinkOptions(o.link);
+  parseLinkCommandLine(parser, o.link, argc, argv);
   if (!(o.rate > 0.0 && o.rate <= 1000.0)) throw std::invalid_argument("--rate: must be in (0, 1000]");
   if (o.seed < -1) throw std::invalid_argument("--seed: must be >= 0");
   return o;

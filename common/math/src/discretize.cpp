@@ -148,6 +148,20 @@ struct ZohKernel {
   static SDLQR_SDA_INLINE void scaled(double a, const Top& x, Top& y) {
     for (int i = 0; i < NX * SP; ++i) y.v[i] = a * x.v[i];
   }
+  // The degree-13 Pade sums (Higham 2005) from the powers M2, M4, M6 and the coefficients b:
+  // out = M6 (b[12+k] M6 + b[10+k] M4 + b[8+k] M2) + b[6+k] M6 + b[4+k] M4 + b[2+k] M2, the odd
+  // sum without M1 (k = 1) or the even sum without b[0] (k = 0). One order of operations for both.
+  static SDLQR_SDA_INLINE void pade13Sum(const double* b, int k, const Top& M2, const Top& M4, const Top& M6,
+                                         Top& out) {
+    Top inner;
+    scaled(b[12 + k], M6, inner);
+    axpy(b[10 + k], M4, inner);
+    axpy(b[8 + k], M2, inner);
+    product(M6, inner, out);
+    axpy(b[6 + k], M6, out);
+    axpy(b[4 + k], M4, out);
+    axpy(b[2 + k], M2, out);
+  }
 
   // Fills `result` with the top rows of exp(M), M given by its top rows; false on a singular D.
   static SDLQR_SDA_INLINE bool run(const Top& m_top, double norm, Top& result) {
@@ -172,20 +186,12 @@ struct ZohKernel {
       const double* b = degree == 3 ? b3 : degree == 5 ? b5 : degree == 7 ? b7 : b9;
       axpy(b[3], M2, odd_rest);
       axpy(b[2], M2, V);
-      if (degree >= 5) {
-        product(M2, M2, M4);
-        axpy(b[5], M4, odd_rest);
-        axpy(b[4], M4, V);
-      }
-      if (degree >= 7) {
-        product(M4, M2, M6);
-        axpy(b[7], M6, odd_rest);
-        axpy(b[6], M6, V);
-      }
-      if (degree >= 9) {
-        product(M6, M2, M8);
-        axpy(b[9], M8, odd_rest);
-        axpy(b[8], M8, V);
+      // Each further degree: the next even power, M2 times the last, into both sums.
+      Top* const powers[] = {&M2, &M4, &M6, &M8};
+      for (int k = 1; 2 * k + 3 <= degree; ++k) {
+        product(*powers[k - 1], M2, *powers[k]);
+        axpy(b[2 * k + 3], *powers[k], odd_rest);
+        axpy(b[2 * k + 2], *powers[k], V);
       }
       finish(M1, odd_rest, b[1], b[0], V, U);
     } else {
@@ -196,21 +202,8 @@ struct ZohKernel {
                                      182.0,               1.0};
       product(M2, M2, M4);
       product(M4, M2, M6);
-      Top inner;
-      scaled(b[13], M6, inner);
-      axpy(b[11], M4, inner);
-      axpy(b[9], M2, inner);
-      product(M6, inner, odd_rest);
-      axpy(b[7], M6, odd_rest);
-      axpy(b[5], M4, odd_rest);
-      axpy(b[3], M2, odd_rest);
-      scaled(b[12], M6, inner);
-      axpy(b[10], M4, inner);
-      axpy(b[8], M2, inner);
-      product(M6, inner, V);
-      axpy(b[6], M6, V);
-      axpy(b[4], M4, V);
-      axpy(b[2], M2, V);
+      pade13Sum(b, 1, M2, M4, M6, odd_rest);
+      pade13Sum(b, 0, M2, M4, M6, V);
       finish(M1, odd_rest, b[1], b[0], V, U);
     }
 
