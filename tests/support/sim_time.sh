@@ -39,3 +39,27 @@ stop_sim_time() {
   kill -TERM "$SIM_TIME_PID" 2>/dev/null
   exec {SIM_TIME_FD}<&-
 }
+
+# start_marked_flight BUILD WORK MARKS LAUNCH_ARGS...: an empty WORK, the waiter for MARKS (before
+# the launch, so no mark is missed), then scripts/launch in the background with its log at
+# WORK/flight.lcmlog and its output in WORK/launch.out. Sets `log` and `launcher` (its pid).
+start_marked_flight() {
+  local build="$1" work="$2" marks="$3"
+  shift 3
+  rm -rf "$work"
+  mkdir -p "$work"
+  log="$work/flight.lcmlog"
+  sim_time_marks "$build" "$marks"
+  "$(dirname "${BASH_SOURCE[0]}")/../../scripts/launch" --build "$build" --log "$log" "$@" > "$work/launch.out" 2>&1 &
+  launcher=$!
+}
+
+# wait_sim_time_or_stop WORK S: wait_sim_time S; if the flight never gets there, shows the launcher's
+# output, stops the flight started by start_marked_flight and exits 1 (the fault never happened).
+wait_sim_time_or_stop() {
+  wait_sim_time "$2" && return 0
+  cat "$1/launch.out"
+  kill -TERM "$launcher"
+  wait "$launcher"
+  exit 1
+}

@@ -9,13 +9,8 @@ set -uo pipefail
 build="$1" work="$2" scenario="$3"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
 source "$root/tests/support/sim_time.sh"
-rm -rf "$work"
-mkdir -p "$work"
-log="$work/flight.lcmlog"
 # The attack starts at 5 s of simulation time, airborne and settled at 1 m (tests/support/sim_time.sh).
-sim_time_marks "$build" 5
-"$root/scripts/launch" --build "$build" --log "$log" "$scenario" > "$work/launch.out" 2>&1 &
-launcher=$!
+start_marked_flight "$build" "$work" 5 "$scenario"
 fuzz_status=1
 if wait_sim_time 5; then
   "$build/bin/sdlqr-fuzz-publisher" --duration 10 --rate 1000 --seed 5 > "$work/fuzz.out" 2>&1

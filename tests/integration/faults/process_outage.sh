@@ -19,14 +19,8 @@ case "$name" in
 esac
 config="$("$build/bin/sdlqr-mission" --describe "$scenario" | sed -n 's/^vehicle=//p')"
 [ -n "$config" ] || { echo "process_outage: cannot read the scenario"; exit 2; }
-rm -rf "$work"
-mkdir -p "$work"
-log="$work/flight.lcmlog"
-
 restart_at=$(awk -v a="$kill_at" -v d="$down_for" 'BEGIN { print a + d }')
-sim_time_marks "$build" "$kill_at,$restart_at"
-"$root/scripts/launch" --build "$build" --log "$log" --without "$name" "$scenario" > "$work/launch.out" 2>&1 &
-launcher=$!
+start_marked_flight "$build" "$work" "$kill_at,$restart_at" --without "$name" "$scenario"
 "$binary" --config "$config" > "$work/$name.1.out" 2>&1 &
 pid=$!
 abort() { echo "process_outage: $*"; cat "$work/launch.out"; kill -TERM "$launcher" "$pid" 2>/dev/null; stop_sim_time; wait; exit 1; }

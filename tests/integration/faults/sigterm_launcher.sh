@@ -5,14 +5,9 @@ set -uo pipefail
 build="$1" work="$2" scenario="$3"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
 source "$root/tests/support/sim_time.sh"
-rm -rf "$work"
-mkdir -p "$work"
-log="$work/flight.lcmlog"
 # The signal comes mid-hover, at 5 s of simulation time (tests/support/sim_time.sh).
-sim_time_marks "$build" 5
-"$root/scripts/launch" --build "$build" --log "$log" "$scenario" > "$work/launch.out" 2>&1 &
-launcher=$!
-wait_sim_time 5 || { cat "$work/launch.out"; kill -TERM "$launcher"; wait "$launcher"; exit 1; }
+start_marked_flight "$build" "$work" 5 "$scenario"
+wait_sim_time_or_stop "$work" 5
 # Only this launcher's processes (other tests fly their own stacks at the same time).
 mapfile -t pids < <(pgrep -P "$launcher" -f '/sdlqr-[a-z-]+ ')
 [ "${#pids[@]}" -eq 7 ] || { echo "expected 7 processes, found ${#pids[@]}"; cat "$work/launch.out"; exit 1; }

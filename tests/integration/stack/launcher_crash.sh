@@ -6,14 +6,10 @@ set -uo pipefail
 build="$1" work="$2" scenario="$3"
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
 source "$root/tests/support/sim_time.sh"
-rm -rf "$work"
-mkdir -p "$work"
 duration_s=$("$build/bin/sdlqr-mission" --describe "$scenario" | sed -n 's/^duration=//p')
-sim_time_marks "$build" 2
-"$root/scripts/launch" --build "$build" --log "$work/flight.lcmlog" "$scenario" > "$work/launch.out" 2>&1 &
-launcher=$!
+start_marked_flight "$build" "$work" 2 "$scenario"
 # Kill 2 s into the flight, by its simulation clock (tests/support/sim_time.sh).
-wait_sim_time 2 || { cat "$work/launch.out"; kill -TERM "$launcher"; wait "$launcher"; exit 1; }
+wait_sim_time_or_stop "$work" 2
 # Only this launcher's children: other tests may fly their own stacks at the same time.
 children=$(pgrep -P "$launcher" | tr '\n' ' ')
 victim=$(pgrep -n -P "$launcher" -f "bin/sdlqr-controller")
