@@ -89,6 +89,15 @@ def save(fig, out, name):
     print(f"plot_log: wrote {plot_files.save(fig, os.path.join(out, name))}")
 
 
+def time_plot(ylabel, height):
+    """One gridded plot against simulation time, 9 inches wide: (fig, ax)."""
+    fig, ax = plt.subplots(figsize=(9, height))
+    ax.set_ylabel(ylabel)
+    ax.set_xlabel("simulation time [s]")
+    ax.grid(True)
+    return fig, ax
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("folder", help="export folder of sdlqr-logger export")
@@ -154,11 +163,8 @@ def main():
         save(fig, out, "position_error.png")
 
     if need("rate_step.png", channels, "RATE_CMD"):
-        fig, ax = plt.subplots(figsize=(9, 5))
+        fig, ax = time_plot("ω_y [rad/s]", 5)
         ax.plot(t(cmd), cmd["body_rate[1]"], "C0", label="ω_y command [rad/s]")
-        ax.set_ylabel("ω_y [rad/s]")
-        ax.set_xlabel("simulation time [s]")
-        ax.grid(True)
         right = ax.twinx()
         if ref is not None:
             right.plot(t(ref), ref["x[0]"], "k--", label="p_x,ref [m]")
@@ -172,23 +178,17 @@ def main():
         save(fig, out, "rate_step.png")
 
     if need("thrust.png", channels, "RATE_CMD"):
-        fig, ax = plt.subplots(figsize=(9, 4))
+        fig, ax = time_plot("mass-normalized thrust [m/s²]", 4)
         ax.plot(t(cmd), cmd["thrust"], label="thrust command")
         clipped = (cmd["saturated"].astype(int) & 2) != 0
         if clipped.any():
             ax.plot(t(cmd)[clipped], cmd["thrust"][clipped], "r.", label="clipped to [c_min, c_max]")
-        ax.set_ylabel("mass-normalized thrust [m/s²]")
-        ax.set_xlabel("simulation time [s]")
         ax.legend(loc="best")
-        ax.grid(True)
         save(fig, out, "thrust.png")
 
     if need("gains_solve.png", channels, "GAINS"):
-        fig, ax = plt.subplots(figsize=(9, 4))
+        fig, ax = time_plot("solve_us [µs]", 4)
         ax.plot(t(gains), gains["solve_us"], ".", label="solve time")
-        ax.set_ylabel("solve_us [µs]")
-        ax.set_xlabel("simulation time [s]")
-        ax.grid(True)
         right = ax.twinx()
         right.plot(t(gains), gains["iterations"], "C1", drawstyle="steps-post", label="iterations")
         right.set_ylabel("iterations [-]")
