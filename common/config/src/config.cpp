@@ -119,6 +119,17 @@ double toFiniteDouble(const YAML::Node& node, const std::string& key) {
   return value;
 }
 
+// A scalar read as T; anything else (a list, a map, a text that is no T) is `expected` at `key`.
+template <class T>
+T scalarAs(const YAML::Node& node, const std::string& key, const char* expected) {
+  try {
+    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
+    return node.as<T>();
+  } catch (const YAML::Exception&) {
+    throw ConfigError(key, expected);
+  }
+}
+
 }  // namespace
 
 void ConfigReader::read(const std::string& key, double& out) const {
@@ -127,36 +138,15 @@ void ConfigReader::read(const std::string& key, double& out) const {
 }
 
 void ConfigReader::read(const std::string& key, int& out) const {
-  if (!has(key)) return;
-  const YAML::Node node = node_[key];
-  try {
-    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
-    out = node.as<int>();
-  } catch (const YAML::Exception&) {
-    throw ConfigError(keyPath(key), "expected an integer");
-  }
+  if (has(key)) out = scalarAs<int>(node_[key], keyPath(key), "expected an integer");
 }
 
 void ConfigReader::read(const std::string& key, long long& out) const {
-  if (!has(key)) return;
-  const YAML::Node node = node_[key];
-  try {
-    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
-    out = node.as<long long>();
-  } catch (const YAML::Exception&) {
-    throw ConfigError(keyPath(key), "expected an integer");
-  }
+  if (has(key)) out = scalarAs<long long>(node_[key], keyPath(key), "expected an integer");
 }
 
 void ConfigReader::read(const std::string& key, bool& out) const {
-  if (!has(key)) return;
-  const YAML::Node node = node_[key];
-  try {
-    if (!node.IsScalar()) throw YAML::Exception(YAML::Mark::null_mark(), "");
-    out = node.as<bool>();
-  } catch (const YAML::Exception&) {
-    throw ConfigError(keyPath(key), "expected true or false");
-  }
+  if (has(key)) out = scalarAs<bool>(node_[key], keyPath(key), "expected true or false");
 }
 
 void ConfigReader::read(const std::string& key, std::string& out) const {

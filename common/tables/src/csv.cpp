@@ -83,33 +83,27 @@ void CsvWriter::name(std::string_view text) { appendCell(text, false); }
 void CsvWriter::integer(int64_t value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%" PRId64, value);
-  startValue();
-  if (depth_ > 0) json_ += buffer;
-  else appendCell(buffer, false);
+  appendNumber(buffer);
 }
 
-void CsvWriter::real(double value) {
+void CsvWriter::real(double value) { realWithDigits(value, 17); }
+
+void CsvWriter::real32(float value) { realWithDigits(static_cast<double>(value), 9); }
+
+void CsvWriter::realWithDigits(double value, int digits) {
   char buffer[40];
   if (depth_ > 0 && !std::isfinite(value)) {
     std::snprintf(buffer, sizeof buffer, "%s", std::isnan(value) ? "NaN" : (value > 0 ? "Infinity" : "-Infinity"));
   } else {
-    std::snprintf(buffer, sizeof buffer, "%.17g", value);
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
   }
-  startValue();
-  if (depth_ > 0) json_ += buffer;
-  else appendCell(buffer, false);
+  appendNumber(buffer);
 }
 
-void CsvWriter::real32(float value) {
-  char buffer[40];
-  if (depth_ > 0 && !std::isfinite(value)) {
-    std::snprintf(buffer, sizeof buffer, "%s", std::isnan(value) ? "NaN" : (value > 0 ? "Infinity" : "-Infinity"));
-  } else {
-    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(value));
-  }
+void CsvWriter::appendNumber(const char* text) {
   startValue();
-  if (depth_ > 0) json_ += buffer;
-  else appendCell(buffer, false);
+  if (depth_ > 0) json_ += text;
+  else appendCell(text, false);
 }
 
 void CsvWriter::text(std::string_view value) {

@@ -39,6 +39,10 @@ class CsvWriter {
 
  private:
   void startValue();
+  // A real with `digits` significant digits (enough to read back the same double or float).
+  void realWithDigits(double value, int digits);
+  // A number's text: a cell, or an element of the array being written.
+  void appendNumber(const char* text);
   void appendCell(std::string_view cell, bool force_quotes);
 
   std::ostream& out_;
