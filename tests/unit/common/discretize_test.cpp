@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -54,6 +55,21 @@ struct EachKernelIsa {
 template <int N>
 double relativeError(const SquareMatrix<N>& actual, const SquareMatrix<N>& expected) {
   return (actual - expected).cwiseAbs().maxCoeff() / expected.cwiseAbs().maxCoeff();
+}
+
+// The worst error of discretizeZoh's Ad and Bd against the Taylor series of exp([A B; 0 0] dt),
+// relative to that exponential's largest entry.
+template <int NX, int NU>
+double zohErrorAgainstTaylor(const Eigen::Matrix<double, NX, NX>& A, const Eigen::Matrix<double, NX, NU>& B,
+                             double dt) {
+  const DiscreteSystem<NX, NU> zoh = discretizeZoh<NX, NU>(A, B, dt);
+  SquareMatrix<NX + NU> augmented = SquareMatrix<NX + NU>::Zero();
+  augmented.template topLeftCorner<NX, NX>() = A * dt;
+  augmented.template topRightCorner<NX, NU>() = B * dt;
+  const SquareMatrix<NX + NU> reference = taylorExp<NX + NU>(augmented);
+  return std::max((zoh.A - reference.template topLeftCorner<NX, NX>()).cwiseAbs().maxCoeff(),
+                  (zoh.B - reference.template topRightCorner<NX, NU>()).cwiseAbs().maxCoeff()) /
+         reference.cwiseAbs().maxCoeff();
 }
 
 TEST(Expm, RotationGeneratorGivesRotationMatrixAtEveryPadeDegreeAndWithSquaring) {
@@ -118,26 +134,9 @@ TEST(Zoh, QuadrotorSystemsMatchTaylorSeriesAtSeveralStepsOnEveryInstructionSet) 
     const double dt = std::array<double, 4>{0.001, 0.01, 0.05, 0.3}[i % 4];
     const Linearization lin = linearize(x, u);
 
-    const DiscreteSystem<10, 4> full = discretizeZoh<10, 4>(lin.A, lin.B, dt);
-    SquareMatrix<14> augmented = SquareMatrix<14>::Zero();
-    augmented.topLeftCorner<10, 10>() = lin.A * dt;
-    augmented.topRightCorner<10, 4>() = lin.B * dt;
-    const SquareMatrix<14> reference = taylorExp<14>(augmented);
-    const double error_full =
-        std::max((full.A - reference.topLeftCorner<10, 10>()).cwiseAbs().maxCoeff(),
-                 (full.B - reference.topRightCorner<10, 4>()).cwiseAbs().maxCoeff()) /
-        reference.cwiseAbs().maxCoeff();
-
+    const double error_full = zohErrorAgainstTaylor<10, 4>(lin.A, lin.B, dt);
     const TangentSystem tangent = projectToTangent(lin, tangentBasis(q), LqrParams().q_diag);
-    const DiscreteSystem<9, 4> reduced = discretizeZoh<9, 4>(tangent.A, tangent.B, dt);
-    SquareMatrix<13> augmented_r = SquareMatrix<13>::Zero();
-    augmented_r.topLeftCorner<9, 9>() = tangent.A * dt;
-    augmented_r.topRightCorner<9, 4>() = tangent.B * dt;
-    const SquareMatrix<13> reference_r = taylorExp<13>(augmented_r);
-    const double error_r =
-        std::max((reduced.A - reference_r.topLeftCorner<9, 9>()).cwiseAbs().maxCoeff(),
-                 (reduced.B - reference_r.topRightCorner<9, 4>()).cwiseAbs().maxCoeff()) /
-        reference_r.cwiseAbs().maxCoeff();
+    const double error_r = zohErrorAgainstTaylor<9, 4>(tangent.A, tangent.B, dt);
     worst = std::max({worst, error_full, error_r});
     EXPECT_LT(error_full, 1e-14) << "case " << i << " dt " << dt;
     EXPECT_LT(error_r, 1e-14) << "case " << i << " dt " << dt;

@@ -7,26 +7,14 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
+
+#include "executable_run.hpp"
 
 namespace {
 
-struct ProcessRun {
-  int exit_code = -1;
-  std::string output;
-};
+using ProcessRun = sdlqr::testing::ExecutableRun;
 
-ProcessRun runProcess(const std::string& args) {
-  const std::string command = std::string(SDLQR_BINARY_DIR) + "/bin/sdlqr-estimator " + args + " 2>&1";
-  ProcessRun run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  char buffer[512];
-  while (fgets(buffer, sizeof buffer, pipe)) run.output += buffer;
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+ProcessRun runProcess(const std::string& args) { return sdlqr::testing::runExecutable("sdlqr-estimator", args); }
 
 std::string writeConfig(const std::string& name, const std::string& text) {
   const std::string path = std::string(SDLQR_BINARY_DIR) + "/tests/unit/estimator/" + name;

@@ -3,9 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <cstdlib>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -14,6 +12,7 @@
 #include "sdlqr/lowlevel/lowlevel_params.hpp"
 
 #include "config_errors.hpp"
+#include "executable_run.hpp"
 
 namespace sdlqr::lowlevel {
 namespace {
@@ -92,10 +91,7 @@ TEST(LowlevelParams, IdleThrustMustSuitTheAirframe) {
 }
 
 int runExecutable(const std::string& arguments) {
-  const std::string command =
-      std::string(SDLQR_BINARY_DIR) + "/bin/sdlqr-lowlevel " + arguments + " > /dev/null 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return testing::runExecutable("sdlqr-lowlevel", arguments).exit_code;
 }
 
 TEST(LowlevelExecutable, HelpExitsZeroAndBadConfigExitsTwo) {

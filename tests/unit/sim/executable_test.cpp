@@ -2,31 +2,19 @@
 // naming the key. Neither opens the bus, so no network namespace is needed.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
 #include <string>
 
+#include "executable_run.hpp"
+
 namespace {
 
-struct ProcessResult {
-  int exit_code = -1;
-  std::string output;  // stdout and stderr
-};
+using ProcessResult = sdlqr::testing::ExecutableRun;
 
-ProcessResult runSim(const std::string& arguments) {
-  const std::string command = std::string(SDLQR_BINARY_DIR) + "/bin/sdlqr-sim " + arguments + " 2>&1";
-  ProcessResult run;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return run;
-  char buffer[512];
-  while (fgets(buffer, sizeof(buffer), pipe)) run.output += buffer;
-  const int status = pclose(pipe);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return run;
-}
+ProcessResult runSim(const std::string& arguments) { return sdlqr::testing::runExecutable("sdlqr-sim", arguments); }
 
 std::string writeConfig(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() + name + "_" + std::to_string(getpid()) + ".yaml";
@@ -42,23 +30,26 @@ TEST(Executable, HelpPrintsUsageAndExitsZero) {
   }
 }
 
-TEST(Executable, UnknownConfigKeyExitsTwoNamingTheKey) {
-  const std::string path = writeConfig("sim_bad_key", "sim:\n  vio:\n    latncy_max_s: 0.05\n");
-  const ProcessResult run = runSim("--config " + path);
+// sdlqr-sim given a file (named after `name`) holding `yaml` with `option`: exit code 2 and one
+// line naming `key`.
+void expectOneLineNamingTheKey(const std::string& option, const std::string& name, const std::string& yaml,
+                               const std::string& key) {
+  const std::string path = writeConfig(name, yaml);
+  const ProcessResult run = runSim(option + " " + path);
   std::remove(path.c_str());
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.output.find("sim.vio.latncy_max_s"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find(key), std::string::npos) << run.output;
   EXPECT_EQ(run.output.find('\n'), run.output.size() - 1) << "one line expected: " << run.output;
+}
+
+TEST(Executable, UnknownConfigKeyExitsTwoNamingTheKey) {
+  expectOneLineNamingTheKey("--config", "sim_bad_key", "sim:\n  vio:\n    latncy_max_s: 0.05\n", "sim.vio.latncy_max_s");
 }
 
 // The scenario's simulated world is read before the bus opens: a bad value exits 2 naming it.
 TEST(Executable, BadScenarioSimKeyExitsTwoNamingTheKey) {
-  const std::string path = writeConfig("sim_bad_stress", "sim:\n  wind:\n    gust_std: [1, -1, 0]\n");
-  const ProcessResult run = runSim("--scenario " + path);
-  std::remove(path.c_str());
-  EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.output.find("sim.wind.gust_std[1]"), std::string::npos) << run.output;
-  EXPECT_EQ(run.output.find('\n'), run.output.size() - 1) << "one line expected: " << run.output;
+  expectOneLineNamingTheKey("--scenario", "sim_bad_stress", "sim:\n  wind:\n    gust_std: [1, -1, 0]\n",
+                            "sim.wind.gust_std[1]");
 }
 
 TEST(Executable, BadValuesAndOptionsExitTwo) {
