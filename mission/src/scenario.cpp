@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <initializer_list>
+#include <string>
+#include <utility>
 
 #include "sdlqr/math/in_flight.hpp"
 #include "sdlqr/math/vehicle.hpp"
@@ -10,6 +13,19 @@
 namespace sdlqr::mission {
 
 namespace {
+
+// The value of the name at `key` among `names` (the first when the key is absent); any other name
+// is a ConfigError at the key saying `expected`.
+template <class E>
+E readChoice(const ConfigReader& reader, const char* key, std::initializer_list<std::pair<const char*, E>> names,
+             const char* expected) {
+  std::string name = names.begin()->first;
+  reader.read(key, name);
+  for (const auto& [candidate, value] : names) {
+    if (name == candidate) return value;
+  }
+  throw ConfigError(reader.keyPath(key), expected);
+}
 
 std::string directoryOf(const std::string& path) {
   const auto slash = path.find_last_of('/');
@@ -55,10 +71,9 @@ Disturbance parseDisturbance(const ConfigReader& d) {
   if (!(out.duration > 0.0 && out.duration <= 60.0)) throw ConfigError(d.keyPath("duration"), "must be in (0, 60] s");
   if (out.force.norm() > 50.0) throw ConfigError(d.keyPath("force"), "magnitude above 50 N");
   if (out.torque.norm() > 5.0) throw ConfigError(d.keyPath("torque"), "magnitude above 5 N m");
-  std::string mode = "force";
-  d.read("mode", mode);
-  if (mode == "hold") {
-    out.mode = DisturbanceMode::kHold;
+  out.mode = readChoice<DisturbanceMode>(d, "mode", {{"force", DisturbanceMode::kForce}, {"hold", DisturbanceMode::kHold}},
+                                        "expected force or hold");
+  if (out.mode == DisturbanceMode::kHold) {
     if (!d.has("hold_position")) throw ConfigError(d.keyPath("hold_position"), "hold needs a position");
     d.read("hold_position", out.hold_position);
     out.hold_stiffness = 20.0;
@@ -71,8 +86,6 @@ Disturbance parseDisturbance(const ConfigReader& d) {
     if (!(out.hold_damping >= 0.0 && out.hold_damping <= 100.0)) {
       throw ConfigError(d.keyPath("damping"), "must be in [0, 100] N s/m");
     }
-  } else if (mode != "force") {
-    throw ConfigError(d.keyPath("mode"), "expected force or hold");
   }
   return out;
 }
@@ -160,28 +173,16 @@ TrajectoryRequest parseTrajectory(const ConfigReader& t, const std::string& base
       if (t.has(key)) throw ConfigError(t.keyPath(key), "only for circle, lemniscate and waypoints");
     }
   }
-  std::string on_infeasible = "refuse";
-  t.read("on_infeasible", on_infeasible);
-  if (on_infeasible == "scale") {
-    out.on_infeasible = OnInfeasible::kScale;
-  } else if (on_infeasible == "fly") {
-    out.on_infeasible = OnInfeasible::kFly;
-  } else if (on_infeasible != "refuse") {
-    throw ConfigError(t.keyPath("on_infeasible"), "expected refuse, scale or fly");
-  }
+  out.on_infeasible = readChoice<OnInfeasible>(
+      t, "on_infeasible", {{"refuse", OnInfeasible::kRefuse}, {"scale", OnInfeasible::kScale}, {"fly", OnInfeasible::kFly}},
+      "expected refuse, scale or fly");
   if (t.has("laps")) {
     t.read("laps", out.laps);
     if (out.laps < 1 || out.laps > 100) throw ConfigError(t.keyPath("laps"), "must be in [1, 100]");
   }
-  std::string tracking = "spatial";
-  t.read("tracking", tracking);
-  if (tracking == "spatial") {
-    out.tracking = ReferenceMode::kSpatial;
-  } else if (tracking == "temporal") {
-    out.tracking = ReferenceMode::kTemporal;
-  } else {
-    throw ConfigError(t.keyPath("tracking"), "expected spatial or temporal");
-  }
+  out.tracking = readChoice<ReferenceMode>(
+      t, "tracking", {{"spatial", ReferenceMode::kSpatial}, {"temporal", ReferenceMode::kTemporal}},
+      "expected spatial or temporal");
   if (t.has("height_offset")) {
     t.read("height_offset", out.height_offset);
     if (!(out.height_offset >= 0.0 && out.height_offset <= 50.0)) {

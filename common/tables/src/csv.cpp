@@ -44,12 +44,20 @@ void appendJsonString(std::string& out, std::string_view text) {
   out.push_back('"');
 }
 
-template <class Int>
-bool parseInteger(std::string_view text, Int& out) {
-  if (text.empty() || text.size() > 24) return false;
-  char buffer[32];
+// `text` NUL-terminated in `buffer` for the C parsers; false when it is empty or longer than
+// `longest` (no number of the type is) or than the buffer holds.
+template <std::size_t N>
+bool terminated(std::string_view text, std::size_t longest, char (&buffer)[N]) {
+  if (text.empty() || text.size() > longest || text.size() >= N) return false;
   text.copy(buffer, text.size());
   buffer[text.size()] = '\0';
+  return true;
+}
+
+template <class Int>
+bool parseInteger(std::string_view text, Int& out) {
+  char buffer[32];
+  if (!terminated(text, 24, buffer)) return false;
   char* end = nullptr;
   errno = 0;
   const long long value = std::strtoll(buffer, &end, 10);
@@ -200,20 +208,16 @@ bool parseValue(std::string_view text, int32_t& out) { return parseInteger(text,
 bool parseValue(std::string_view text, int64_t& out) { return parseInteger(text, out); }
 
 bool parseValue(std::string_view text, double& out) {
-  if (text.empty() || text.size() > 40) return false;
   char buffer[48];
-  text.copy(buffer, text.size());
-  buffer[text.size()] = '\0';
+  if (!terminated(text, 40, buffer)) return false;
   char* end = nullptr;
   out = std::strtod(buffer, &end);  // subnormals set ERANGE yet are exact: not an error here
   return *end == '\0';
 }
 
 bool parseValue(std::string_view text, float& out) {
-  if (text.empty() || text.size() > 40) return false;
   char buffer[48];
-  text.copy(buffer, text.size());
-  buffer[text.size()] = '\0';
+  if (!terminated(text, 40, buffer)) return false;
   char* end = nullptr;
   out = std::strtof(buffer, &end);
   return *end == '\0';
