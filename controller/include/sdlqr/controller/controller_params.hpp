@@ -15,7 +15,7 @@ enum class UploadBeyondLimits { kRefuse, kScale };
 
 // Each member is declared once (key, unit, default, range, help) in ControllerParams::declaration()
 // (controller_params.cpp); the default constructor takes the defaults from there.
-struct ControllerParams {
+struct ControllerParams : DeclaredParams<ControllerParams> {
   double rate_hz;
   double max_prediction_s;  // longest an estimate is carried forward to a tick (0: never)
   double gains_stale_s;
@@ -53,9 +53,6 @@ struct ControllerParams {
 
   ControllerParams();
   static const ParamTable<ControllerParams>& declaration();
-  static ControllerParams load(const ConfigReader& controller) { return declaration().load(controller); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 }  // namespace sdlqr::controller

@@ -13,7 +13,7 @@ namespace sdlqr::estimator {
 
 // Each member is declared once (key, unit, default, range, help) in EstimatorParams::declaration()
 // (estimator_params.cpp); the default constructor takes the defaults from there.
-struct EstimatorParams {
+struct EstimatorParams : DeclaredParams<EstimatorParams> {
   // IMU model (continuous-time densities; per-sample std = density * sqrt(sample rate)).
   double gyro_noise_density;
   double accel_noise_density;
@@ -60,11 +60,6 @@ struct EstimatorParams {
   int64_t outputPeriodUs() const;
   // Entries the history buffer needs to reach history_length back from the newest state.
   int historyCapacity() const;
-
-  static EstimatorParams load(const ConfigReader& estimator) { return declaration().load(estimator); }
-  // Empty when valid, else "key: reason" for the first violation found.
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 }  // namespace sdlqr::estimator

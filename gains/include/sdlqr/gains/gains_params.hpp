@@ -9,15 +9,12 @@
 namespace sdlqr::gains {
 
 // Declared (key, unit, default, range, help) in GainsParams::declaration() (gains_params.cpp).
-struct GainsParams {
+struct GainsParams : DeclaredParams<GainsParams> {
   double rate_hz;
   double state_timeout_s;
 
   GainsParams();
   static const ParamTable<GainsParams>& declaration();
-  static GainsParams load(const ConfigReader& gains) { return declaration().load(gains); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 }  // namespace sdlqr::gains

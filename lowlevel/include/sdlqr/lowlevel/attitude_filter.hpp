@@ -16,7 +16,7 @@
 namespace sdlqr::lowlevel {
 
 // Declared (key, unit, default, range, help) in AttitudeFilterParams::declaration() (attitude_filter.cpp).
-struct AttitudeFilterParams {
+struct AttitudeFilterParams : DeclaredParams<AttitudeFilterParams> {
   double flight_gain;
   double ground_gain;
   double accel_gate;
@@ -25,9 +25,6 @@ struct AttitudeFilterParams {
 
   AttitudeFilterParams();
   static const ParamTable<AttitudeFilterParams>& declaration();
-  static AttitudeFilterParams load(const ConfigReader& reader) { return declaration().load(reader); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 class AttitudeFilter {

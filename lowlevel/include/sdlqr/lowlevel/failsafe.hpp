@@ -14,7 +14,7 @@
 namespace sdlqr::lowlevel {
 
 // Declared (key, unit, default, range, help) in FailsafeParams::declaration() (failsafe.cpp).
-struct FailsafeParams {
+struct FailsafeParams : DeclaredParams<FailsafeParams> {
   double descent_rate;
   double velocity_gain;
   double velocity_integral_gain;
@@ -28,9 +28,6 @@ struct FailsafeParams {
 
   FailsafeParams();
   static const ParamTable<FailsafeParams>& declaration();
-  static FailsafeParams load(const ConfigReader& reader) { return declaration().load(reader); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 struct FailsafeOutput {

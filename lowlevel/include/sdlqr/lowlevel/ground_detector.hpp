@@ -13,7 +13,7 @@
 namespace sdlqr::lowlevel {
 
 // Declared (key, unit, default, range, help) in GroundDetectorParams::declaration() (ground_detector.cpp).
-struct GroundDetectorParams {
+struct GroundDetectorParams : DeclaredParams<GroundDetectorParams> {
   double filter_cutoff_hz;
   double accel_tolerance;
   double gyro_tolerance;
@@ -23,9 +23,6 @@ struct GroundDetectorParams {
 
   GroundDetectorParams();
   static const ParamTable<GroundDetectorParams>& declaration();
-  static GroundDetectorParams load(const ConfigReader& reader) { return declaration().load(reader); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 class GroundDetector {

@@ -16,7 +16,7 @@ inline constexpr int64_t kNoTime = std::numeric_limits<int64_t>::min();
 
 // Declared (key, unit, default, range, help) in InputLimits::declaration() (input_checks.cpp).
 // The RATE_CMD body-rate bound is the stack's one, ValidationLimits::max_body_rate.
-struct InputLimits {
+struct InputLimits : DeclaredParams<InputLimits> {
   double max_command_lead;
   double max_gyro;
   double max_accel;
@@ -24,9 +24,6 @@ struct InputLimits {
 
   InputLimits();
   static const ParamTable<InputLimits>& declaration();
-  static InputLimits load(const ConfigReader& reader) { return declaration().load(reader); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 // kNonFinite, kOutOfRange (beyond the sensor range), kTimeBackwards (not newer than the previous

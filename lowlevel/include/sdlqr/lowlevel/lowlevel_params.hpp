@@ -18,7 +18,7 @@ namespace sdlqr::lowlevel {
 
 // Declared (key, unit, default, range, help) in LowlevelParams::declaration() (lowlevel_params.cpp);
 // each nested struct in its own file.
-struct LowlevelParams {
+struct LowlevelParams : DeclaredParams<LowlevelParams> {
   double idle_thrust;
   double rate_cmd_timeout;
   double dt_min;
@@ -34,11 +34,6 @@ struct LowlevelParams {
 
   LowlevelParams();
   static const ParamTable<LowlevelParams>& declaration();
-  // Reads the given `lowlevel` mapping; throws ConfigError naming the key on a wrong value.
-  static LowlevelParams load(const ConfigReader& lowlevel) { return declaration().load(lowlevel); }
-  // Empty when valid, else "key: reason" (nested keys dotted: "failsafe.descent_rate: ...").
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
   // Checks against the airframe: the idle thrust must fit the rotors and not lift the vehicle.
   std::string invalidReasonFor(const VehicleParams& vehicle, double gravity) const;
   // Checks against the stack's message limits: the failsafe stays within the body-rate bound.

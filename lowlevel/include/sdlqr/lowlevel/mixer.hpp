@@ -18,14 +18,11 @@
 namespace sdlqr::lowlevel {
 
 // Declared (key, unit, default, range, help) in MixerParams::declaration() (mixer.cpp).
-struct MixerParams {
+struct MixerParams : DeclaredParams<MixerParams> {
   double yaw_collective_share;
 
   MixerParams();
   static const ParamTable<MixerParams>& declaration();
-  static MixerParams load(const ConfigReader& reader) { return declaration().load(reader); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 struct MixerResult {

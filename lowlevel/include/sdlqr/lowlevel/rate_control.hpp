@@ -16,7 +16,7 @@ namespace sdlqr::lowlevel {
 using AxisFlags = Eigen::Array<bool, 3, 1>;
 
 // Declared (key, unit, default, range, help) in RateControlParams::declaration() (rate_control.cpp).
-struct RateControlParams {
+struct RateControlParams : DeclaredParams<RateControlParams> {
   Vec3 p;
   Vec3 i;
   Vec3 d;
@@ -26,9 +26,6 @@ struct RateControlParams {
 
   RateControlParams();
   static const ParamTable<RateControlParams>& declaration();
-  static RateControlParams load(const ConfigReader& reader) { return declaration().load(reader); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 class RateController {

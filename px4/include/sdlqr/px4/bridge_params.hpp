@@ -10,7 +10,7 @@
 
 namespace sdlqr::px4 {
 
-struct BridgeParams {
+struct BridgeParams : DeclaredParams<BridgeParams> {
   int system_id;             // our MAVLink system id (a companion shares its autopilot's)
   int autopilot_system;      // the autopilot's system and component ids (targets of our commands)
   int autopilot_component;
@@ -31,9 +31,6 @@ struct BridgeParams {
 
   BridgeParams();
   static const ParamTable<BridgeParams>& declaration();
-  static BridgeParams load(const ConfigReader& px4) { return declaration().load(px4); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 }  // namespace sdlqr::px4

@@ -9,7 +9,7 @@
 
 namespace sdlqr::px4emu {
 
-struct EmulatorParams {
+struct EmulatorParams : DeclaredParams<EmulatorParams> {
   int mav_sys_id;          // PX4's MAV_SYS_ID
   double com_of_loss_t;    // [s] PX4's COM_OF_LOSS_T: no setpoint this long in OFFBOARD -> failsafe
   int com_obl_rc_act;      // PX4's COM_OBL_RC_ACT: 4 Land, 5 Hold (the two emulated)
@@ -21,9 +21,6 @@ struct EmulatorParams {
 
   EmulatorParams();
   static const ParamTable<EmulatorParams>& declaration();
-  static EmulatorParams load(const ConfigReader& section) { return declaration().load(section); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 inline constexpr int kLandAction = 4;  // COM_OBL_RC_ACT

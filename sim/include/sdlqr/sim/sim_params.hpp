@@ -84,7 +84,7 @@ struct DisturbanceLimits {
   static const ParamTable<DisturbanceLimits>& declaration();
 };
 
-struct SimParams {
+struct SimParams : DeclaredParams<SimParams> {
   int physics_rate_hz;
   int truth_rate_hz;
   ImuParams imu;
@@ -102,11 +102,6 @@ struct SimParams {
 
   SimParams();
   static const ParamTable<SimParams>& declaration();
-  // Reads the `sim` mapping; throws ConfigError naming the key ("sim.vio.latency_max_s").
-  static SimParams load(const ConfigReader& sim) { return declaration().load(sim); }
-  // Empty when valid, else "key: reason" with the key relative to `sim`.
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 }  // namespace sdlqr::sim

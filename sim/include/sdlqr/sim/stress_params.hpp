@@ -87,7 +87,7 @@ struct PayloadDrop {
   bool enabled() const { return at >= 0.0; }
 };
 
-struct SimStress {
+struct SimStress : DeclaredParams<SimStress> {
   PlantOverride plant;
   WindParams wind;
   AirborneStart airborne_start;
@@ -96,12 +96,10 @@ struct SimStress {
 
   SimStress();
   static const ParamTable<SimStress>& declaration();
-  // Reads the scenario's `sim` mapping; throws ConfigError naming the key ("sim.wind.gust_std[1]").
-  static SimStress load(const ConfigReader& sim) { return declaration().load(sim); }
+  // load(): a scenario's `sim` mapping, its ConfigError naming the key ("sim.wind.gust_std[1]").
   // The `sim` mapping of a scenario file (the simulator reads no other part of it: the scenario's
   // events are the mission's, which checks the whole file).
   static SimStress loadFromScenario(const std::string& scenario_path);
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
 };
 
 }  // namespace sdlqr::sim

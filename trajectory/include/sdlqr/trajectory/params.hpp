@@ -11,7 +11,7 @@ namespace sdlqr::trajectory {
 
 // Each member is declared once (key, unit, default, range, help) in TrajectoryParams::declaration()
 // (params.cpp); the default constructor takes the defaults from there.
-struct TrajectoryParams {
+struct TrajectoryParams : DeclaredParams<TrajectoryParams> {
   double sample_dt;
   double check_dt;
   double height_offset;  // added to the paper's waypoint z (theirs start at 0)
@@ -27,10 +27,6 @@ struct TrajectoryParams {
 
   TrajectoryParams();
   static const ParamTable<TrajectoryParams>& declaration();
-  // Reads the `trajectory` mapping; throws ConfigError naming the key.
-  static TrajectoryParams load(const ConfigReader& trajectory) { return declaration().load(trajectory); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 
   SampleChecks sampleChecks() const;
 };

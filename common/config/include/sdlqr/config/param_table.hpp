@@ -431,4 +431,16 @@ class ParamTable final : public ParamSection {
   std::vector<std::string> keys_;
 };
 
+// What every parameter section P declared by a table (static const ParamTable<P>& declaration())
+// offers, written once: struct P : DeclaredParams<P> { ... }.
+template <class P>
+struct DeclaredParams {
+  // Reads the given mapping (defaults for the keys absent); throws ConfigError naming the key on a
+  // wrong type or value.
+  static P load(const ConfigReader& reader) { return P::declaration().load(reader); }
+  // Empty when valid, else "key: reason" for the first violation found (nested keys dotted).
+  std::string invalidReason() const { return P::declaration().invalidReason(static_cast<const P&>(*this)); }
+  bool valid() const { return invalidReason().empty(); }
+};
+
 }  // namespace sdlqr

@@ -18,7 +18,7 @@ namespace sdlqr {
 // in ValidationLimits::declaration() (validate.cpp). max_body_rate is the one body-rate limit of
 // the stack: estimates, references, trajectories, RATE_CMD in the bodyrate loop, a PARAMS
 // omega_max and the failsafe's levelling rate are all held to it.
-struct ValidationLimits {
+struct ValidationLimits : DeclaredParams<ValidationLimits> {
   double quaternion_norm_tolerance;
   double max_position;
   double max_velocity;
@@ -30,9 +30,6 @@ struct ValidationLimits {
 
   ValidationLimits();
   static const ParamTable<ValidationLimits>& declaration();
-  static ValidationLimits load(const ConfigReader& validation) { return declaration().load(validation); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 // The LQR limits of a vehicle file against the message limits, as validate(ParamsUpdate) holds a

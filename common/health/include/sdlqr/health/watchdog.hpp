@@ -34,7 +34,7 @@ class Watchdog {
 };
 
 // Declared (key, unit, default, range, help) in FaultParams::declaration() (watchdog.cpp).
-struct FaultParams {
+struct FaultParams : DeclaredParams<FaultParams> {
   double controller_state_timeout_s;
   double lowlevel_imu_timeout_s;
   double state_max_jump_s;
@@ -42,9 +42,6 @@ struct FaultParams {
 
   FaultParams();
   static const ParamTable<FaultParams>& declaration();
-  static FaultParams load(const ConfigReader& faults) { return declaration().load(faults); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 }  // namespace sdlqr

@@ -29,7 +29,7 @@ bool isControlLaw(ControlLaw law);
 // Each member is declared once (key, unit, default, range, help, whether PARAMS changes it in
 // flight) in LqrParams::declaration() (lqr_params.cpp); the default constructor takes the
 // defaults from there.
-struct LqrParams {
+struct LqrParams : DeclaredParams<LqrParams> {
   State q_diag;
   Input r_diag;
   double dt;
@@ -51,15 +51,10 @@ struct LqrParams {
 
   LqrParams();
   static const ParamTable<LqrParams>& declaration();
-  // Reads the given `lqr` mapping; throws ConfigError naming the key on a wrong type or value.
-  static LqrParams load(const ConfigReader& lqr) { return declaration().load(lqr); }
   // The `lqr` section of a vehicle file's root, with the airframe's rotor drag from its `vehicle`.
   static LqrParams loadWithVehicle(const ConfigReader& root);
   // The rotor drag of the controllers' model: the vehicle's when model_rotor_drag, else none.
   RotorDrag rotorDrag() const;
-  // Empty when valid, else "key: reason" for the first violation found.
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
 };
 
 const char* toString(LqrMethod method);

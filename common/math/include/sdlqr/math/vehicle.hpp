@@ -16,7 +16,7 @@ using Mat44 = Eigen::Matrix<double, 4, 4>;
 
 // Each member is declared once (key, unit, default, range, help) in VehicleParams::declaration()
 // (vehicle.cpp); the default constructor takes the defaults from there.
-struct VehicleParams {
+struct VehicleParams : DeclaredParams<VehicleParams> {
   double mass;
   Vec3 inertia_diag;  // principal moments, body axes
   double arm_length;
@@ -42,11 +42,8 @@ struct VehicleParams {
   // the range vehicle.mass declares and liftable under `gravity`. Empty when accepted, else the
   // reason.
   std::string massInvalidReason(double candidate_mass, double gravity) const;
-
-  // Reads the `vehicle` mapping; arm_length alone also sets the X layout unless rotor_xy is given.
-  static VehicleParams load(const ConfigReader& vehicle) { return declaration().load(vehicle); }
-  std::string invalidReason() const { return declaration().invalidReason(*this); }
-  bool valid() const { return invalidReason().empty(); }
+  // load() reads the `vehicle` mapping: arm_length alone also sets the X layout unless rotor_xy is
+  // given.
 };
 
 }  // namespace sdlqr
