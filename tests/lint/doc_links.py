@@ -8,6 +8,7 @@ Checks README.md and every docs/**/*.md and prints one line per finding, named b
   broken-anchor   a link's #anchor that names no heading of its page
   unknown-command `./sdlqr WORD` where WORD is no command of ./sdlqr's main()
   missing-file    an inline `path/...` into a folder of the repository that does not exist
+  unknown-executable  `sdlqr-NAME` that no CMakeLists.txt or cmake/ file names (an executable)
 Exit 0 without a finding, 1 with one, 2 on bad input.
 """
 import os
@@ -18,6 +19,8 @@ import sys
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
 SDLQR = re.compile(r"\./sdlqr\s+([a-z][\w-]*|--?[\w-]+)")
 INLINE = re.compile(r"`([^`\n]+)`")
+# An executable's name as prose or a command line spells it (not inside a path or a longer word).
+EXECUTABLE = re.compile(r"(?<![\w/.-])sdlqr-[a-z][a-z0-9]*(?:-[a-z0-9]+)*")
 # A path a reader would type: no placeholder, glob, variable or elision.
 NOT_LITERAL = re.compile(r"[<>*{}$|]|\.\.\.|…")
 
@@ -48,6 +51,18 @@ def commands(root):
     return {name for arm in arms for name in arm.split("|")}
 
 
+def executables(root):
+    """Every sdlqr-NAME the build files name: the executables' output names."""
+    names = set()
+    for folder, _, files in os.walk(root):
+        if os.path.relpath(folder, root).split(os.sep)[0] in ("build", "node_modules", ".git"):
+            continue
+        for file in files:
+            if file == "CMakeLists.txt" or file.endswith(".cmake"):
+                names |= set(EXECUTABLE.findall(open(os.path.join(folder, file), encoding="utf-8").read()))
+    return names
+
+
 def slug(heading):
     """GitHub's anchor of a heading."""
     text = re.sub(r"[`*_]", "", heading.strip().lower())
@@ -61,7 +76,8 @@ def anchors(path):
     return {slug(h) for h in re.findall(r"^#+\s+(.*)$", text, re.M)}
 
 
-def check_page(root, page, folders, known_commands):
+def check_page(root, page, folders, known):
+    known_commands, known_executables = known
     findings = []
     text = open(page, encoding="utf-8").read()
     prose = re.sub(r"```.*?```", lambda m: "\n" * m.group(0).count("\n"), text, flags=re.S)
@@ -70,6 +86,9 @@ def check_page(root, page, folders, known_commands):
         for word in SDLQR.findall(line):
             if word not in known_commands:
                 findings.append(f"{name}:{number}: unknown-command ./sdlqr {word}")
+        for executable in EXECUTABLE.findall(line):
+            if executable not in known_executables:
+                findings.append(f"{name}:{number}: unknown-executable {executable}")
     for number, line in enumerate(prose.split("\n"), 1):
         for target in LINK.findall(line):
             if re.match(r"^[a-z]+:", target):
@@ -97,7 +116,7 @@ def main():
     pages = [os.path.join(root, "README.md")]
     for folder, _, names in os.walk(os.path.join(root, "docs")):
         pages += [os.path.join(folder, n) for n in sorted(names) if n.endswith(".md")]
-    folders, known = repository_entries(root), commands(root)
+    folders, known = repository_entries(root), (commands(root), executables(root))
     findings = [f for page in pages if os.path.exists(page) for f in check_page(root, page, folders, known)]
     for finding in findings:
         print(finding)
