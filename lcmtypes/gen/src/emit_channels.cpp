@@ -86,9 +86,9 @@ void emitTraits(std::ostringstream& out, const std::vector<const PlainStruct*>& 
 std::string emitChannelsHeader(const PlainModel& model, const std::string& source_note) {
   const std::vector<const PlainStruct*> typed = withChannel(model);
   std::ostringstream out;
-  out << "#pragma once\n" << text::banner(source_note);
-  out << "// The channel of every message type, declared with the type in its .lcm file (@channel NAME,\n"
-         "// @split_port N): one type per channel; names without the vehicle prefix.\n\n";
+  out << text::headerOpening(source_note,
+                             "// The channel of every message type, declared with the type in its .lcm file (@channel NAME,\n"
+                             "// @split_port N): one type per channel; names without the vehicle prefix.\n\n");
   out << "#include <cstdint>\n#include <string_view>\n\n";
   out << "#include \"" << generatedInclude(model.package, "plain.hpp") << "\"\n\n";
   const std::string ns = text::packageNamespace(model.package);
@@ -104,10 +104,10 @@ std::string emitChannelsHeader(const PlainModel& model, const std::string& sourc
 std::string emitOutboxHeader(const PlainModel& model, const std::string& source_note) {
   const std::vector<const PlainStruct*> typed = withChannel(model);
   std::ostringstream out;
-  out << "#pragma once\n" << text::banner(source_note);
-  out << "// Where a process core puts the messages it publishes: one overload per message type with a\n"
-         "// channel. The bus publishes each on the channel of its type; the in-process loop and the replay\n"
-         "// route it by the cores' declared ports (sdlqr/messages/ports.hpp). Cores never see which.\n\n";
+  out << text::headerOpening(source_note,
+                             "// Where a process core puts the messages it publishes: one overload per message type with a\n"
+                             "// channel. The bus publishes each on the channel of its type; the in-process loop and the replay\n"
+                             "// route it by the cores' declared ports (sdlqr/messages/ports.hpp). Cores never see which.\n\n");
   out << "#include <utility>\n\n";
   out << "#include \"" << generatedInclude(model.package, "plain.hpp") << "\"\n\n";
   const std::string ns = text::packageNamespace(model.package);

@@ -124,11 +124,11 @@ void copyMembers(std::ostringstream& out, const PlainModel& model, const PlainSt
 
 std::string emitConvertHeader(const PlainModel& model, const std::string& source_note) {
   std::ostringstream out;
-  out << "#pragma once\n" << text::banner(source_note);
-  out << "// fromLcm / toLcm: field-for-field copies between the lcm-gen classes and the plain structs.\n"
-         "// Converting copies only; validation lives in the libraries. Types without a variable-length\n"
-         "// array or a string convert without allocating. An array count larger than its arrays (a\n"
-         "// message decode cannot produce) is cut to them.\n\n";
+  out << text::headerOpening(source_note,
+                             "// fromLcm / toLcm: field-for-field copies between the lcm-gen classes and the plain structs.\n"
+                             "// Converting copies only; validation lives in the libraries. Types without a variable-length\n"
+                             "// array or a string convert without allocating. An array count larger than its arrays (a\n"
+                             "// message decode cannot produce) is cut to them.\n\n");
   out << "#include <cstddef>\n\n";
   out << "#include \"" << generatedInclude(model.package, "plain.hpp") << "\"\n";
   out << "#include \"sdlqr/lcmtypes/fields.hpp\"\n";

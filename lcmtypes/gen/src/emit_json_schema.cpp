@@ -94,9 +94,9 @@ std::string jsonSchemaText(const LcmStruct& type) {
 
 std::string emitJsonSchemasHeader(const std::vector<LcmStruct>& types, const std::string& source_note) {
   std::ostringstream out;
-  out << "#pragma once\n" << text::banner(source_note);
-  out << "// The JSON Schema (draft-07) of each LCM type's JSON encoding: an object member per field in\n"
-         "// .lcm order, a nested array per dimension, numbers or null (not finite) for float and double.\n\n";
+  out << text::headerOpening(source_note,
+                             "// The JSON Schema (draft-07) of each LCM type's JSON encoding: an object member per field in\n"
+                             "// .lcm order, a nested array per dimension, numbers or null (not finite) for float and double.\n\n");
   out << "#include <string_view>\n\n";
   const std::string ns = text::packageNamespace(types.empty() ? std::string() : types.front().package) + "::lcmtypes";
   out << "namespace " << ns << " {\n\n";

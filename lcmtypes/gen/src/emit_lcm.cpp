@@ -68,8 +68,8 @@ std::string packageOf(const std::vector<LcmStruct>& types) { return types.empty(
 
 std::string emitDescriptorsHeader(const std::vector<LcmStruct>& types, const std::string& source_note) {
   std::ostringstream out;
-  out << "#pragma once\n" << text::banner(source_note);
-  out << "// Field descriptors and CSV columns of every LCM type (no LCM include).\n\n";
+  out << text::headerOpening(source_note,
+                             "// Field descriptors and CSV columns of every LCM type (no LCM include).\n\n");
   out << "#include <cstddef>\n#include <string_view>\n\n#include \"sdlqr/lcmtypes/field_descriptor.hpp\"\n\n";
   const std::string ns = text::packageNamespace(packageOf(types)) + "::lcmtypes";
   out << "namespace " << ns << " {\n\n";
@@ -105,10 +105,10 @@ std::string emitDescriptorsHeader(const std::vector<LcmStruct>& types, const std
 
 std::string emitLcmFieldsHeader(const std::vector<LcmStruct>& types, const std::string& source_note) {
   std::ostringstream out;
-  out << "#pragma once\n" << text::banner(source_note);
-  out << "// LcmFields<T>::visit(v, m...) calls v(FieldDescriptor, m.field...) for every field of the\n"
-         "// lcm-gen class T in wire order; LcmFields<T>::type is its descriptor. visitLcmType maps a\n"
-         "// type name to its class; " << typeListMacro(types) << "(X) calls X(class) for every type.\n\n";
+  out << text::headerOpening(source_note,
+                             "// LcmFields<T>::visit(v, m...) calls v(FieldDescriptor, m.field...) for every field of the\n"
+                             "// lcm-gen class T in wire order; LcmFields<T>::type is its descriptor. visitLcmType maps a\n"
+                             "// type name to its class; " + typeListMacro(types) + "(X) calls X(class) for every type.\n\n");
   out << "#include <string_view>\n\n";
   out << "#include \"" << generatedInclude(packageOf(types), "descriptors.hpp") << "\"\n";
   out << "#include \"sdlqr/lcmtypes/fields.hpp\"\n";
@@ -144,10 +144,10 @@ std::string emitLcmFieldsHeader(const std::vector<LcmStruct>& types, const std::
 
 std::string emitWireFitsHeader(const std::vector<LcmStruct>& types, const std::string& source_note) {
   std::ostringstream out;
-  out << "#pragma once\n" << text::banner(source_note);
-  out << "// encodingFits(static_cast<const T*>(nullptr), data, size): the bytes hold exactly one\n"
-         "// complete encoding of T, checked before an lcm-gen decoder runs and without allocating\n"
-         "// (see sdlqr/lcmtypes/wire_cursor.hpp).\n\n";
+  out << text::headerOpening(source_note,
+                             "// encodingFits(static_cast<const T*>(nullptr), data, size): the bytes hold exactly one\n"
+                             "// complete encoding of T, checked before an lcm-gen decoder runs and without allocating\n"
+                             "// (see sdlqr/lcmtypes/wire_cursor.hpp).\n\n");
   out << "#include <cstdint>\n\n#include \"sdlqr/lcmtypes/wire_cursor.hpp\"\n";
   for (const LcmStruct& t : types) out << "#include \"" << text::lcmInclude(t) << "\"\n";
   const std::string ns = text::packageNamespace(packageOf(types)) + "::lcmtypes";

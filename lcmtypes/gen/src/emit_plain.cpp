@@ -71,10 +71,10 @@ void emitFields(std::ostringstream& out, const std::string& ns, const PlainStruc
 
 std::string emitPlainHeader(const PlainModel& model, const std::string& source_note) {
   std::ostringstream out;
-  out << "#pragma once\n" << text::banner(source_note);
-  out << "// Plain message structs: what the libraries exchange, one per LCM type, field for field\n"
-         "// (units and frames as in the .lcm files). convert.hpp converts to and from the lcm-gen\n"
-         "// classes, so those never reach algorithm code and the in-process loop needs no bus.\n\n";
+  out << text::headerOpening(source_note,
+                             "// Plain message structs: what the libraries exchange, one per LCM type, field for field\n"
+                             "// (units and frames as in the .lcm files). convert.hpp converts to and from the lcm-gen\n"
+                             "// classes, so those never reach algorithm code and the in-process loop needs no bus.\n\n");
   out << "#include <array>\n#include <cstdint>\n#include <string>\n#include <vector>\n\n";
   out << "#include \"sdlqr/math/types.hpp\"\n\n";
   out << "namespace " << text::packageNamespace(model.package) << " {\n\n";
@@ -88,9 +88,9 @@ std::string emitPlainHeader(const PlainModel& model, const std::string& source_n
 
 std::string emitPlainFieldsHeader(const PlainModel& model, const std::string& source_note) {
   std::ostringstream out;
-  out << "#pragma once\n" << text::banner(source_note);
-  out << "// PlainFields<T>::visit(v, s...) calls v(PlainField, s.member...) for every member of the\n"
-         "// plain struct T in declaration order (see sdlqr/lcmtypes/fields.hpp).\n\n";
+  out << text::headerOpening(source_note,
+                             "// PlainFields<T>::visit(v, s...) calls v(PlainField, s.member...) for every member of the\n"
+                             "// plain struct T in declaration order (see sdlqr/lcmtypes/fields.hpp).\n\n");
   out << "#include <string_view>\n\n";
   out << "#include \"" << generatedInclude(model.package, "plain.hpp") << "\"\n";
   out << "#include \"sdlqr/lcmtypes/fields.hpp\"\n\n";

@@ -12,6 +12,8 @@ std::string packageNamespace(const std::string& package);  // "a.b" -> "a::b"
 std::string lcmClass(const LcmStruct& type);       // "::sdlqr::imu_t"
 std::string lcmInclude(const LcmStruct& type);     // "sdlqr/imu_t.hpp"
 std::string descriptorName(const LcmStruct& type); // "kImuT"
-std::string banner(const std::string& source_note);
+// The opening of every generated header: #pragma once, the banner naming its inputs
+// (`source_note`) and `purpose`, the comment that says what the header is for.
+std::string headerOpening(const std::string& source_note, const std::string& purpose);
 
 }  // namespace sdlqr::lcmgen::text
