@@ -72,8 +72,7 @@ RecordCommand parseRecordCommand(int argc, const char* const* argv) {
   parser.addOption("--channels", &channels, "REGEX",
                    "channels to record, LCM regex on the full name (default: all; with --vehicle, PREFIX/.*)");
   parser.addOption("--duration", &duration_s, "S", "stop after S seconds of wall time (default: until a signal)");
-  parser.addOption("--lcm-url", &process.lcm_url, "URL",
-                   "LCM provider (default: $LCM_DEFAULT_URL or udpm://239.255.76.67:7667?ttl=0)");
+  sdlqr::addLcmUrlOption(parser, &process.lcm_url);
   parser.addOption("--vehicle", &process.vehicle, "PREFIX", "vehicle to record; also prefixes this logger's HEARTBEAT");
   sdlqr::addBusLayoutOption(parser, &process);
   parser.setEpilog(

@@ -152,13 +152,16 @@ void ArgParser::parseOrExit(int argc, const char* const* argv) const {
 
 void addProcessOptions(ArgParser& parser, ProcessOptions* options) {
   parser.addOption("--config", &options->config_path, "FILE", "vehicle configuration (YAML); defaults built in");
-  parser.addOption("--lcm-url", &options->lcm_url, "URL",
-                   "LCM provider (default: $LCM_DEFAULT_URL or udpm://239.255.76.67:7667?ttl=0)");
+  addLcmUrlOption(parser, &options->lcm_url);
   parser.addOption("--vehicle", &options->vehicle, "PREFIX", "channel prefix, e.g. QUAD1 gives QUAD1/IMU");
   parser.addFlag("--print-config", &options->print_config,
                  "print the sections of the vehicle file this program reads, with the values it\n"
                  "                          would run with (defaults and --config), as YAML, and exit");
   addBusLayoutOption(parser, options);
+}
+
+void addLcmUrlOption(ArgParser& parser, std::string* lcm_url) {
+  parser.addOption("--lcm-url", lcm_url, "URL", "LCM provider (default: $LCM_DEFAULT_URL or udpm://239.255.76.67:7667?ttl=0)");
 }
 
 void addBusLayoutOption(ArgParser& parser, ProcessOptions* options) {

@@ -32,8 +32,7 @@ ViewCommand parseViewCommand(int argc, const char* const* argv) {
   parser.addOption("--log", &c.log_path, "FILE", "play this LCM log instead of listening to the bus");
   parser.addOption("--speed", &c.speed, "F", "with --log: log seconds per wall second (default 1, at most 64)");
   parser.addFlag("--paused", &c.paused, "with --log: start paused");
-  parser.addOption("--lcm-url", &c.bus.lcm_url, "URL",
-                   "LCM provider (default: $LCM_DEFAULT_URL or udpm://239.255.76.67:7667?ttl=0)");
+  addLcmUrlOption(parser, &c.bus.lcm_url);
   addBusLayoutOption(parser, &c.bus);
   parser.addOption("--bus-netns", &c.bus_netns, "FILE",
                    "listen to the bus of this network namespace (e.g. /proc/PID/ns/net of a private flight)\n"

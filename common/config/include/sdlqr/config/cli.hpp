@@ -55,7 +55,9 @@ struct ProcessOptions {
   bool print_config = false;  // print the sections read (printProcessConfig) and exit 0
 };
 void addProcessOptions(ArgParser& parser, ProcessOptions* options);
-// --bus-layout alone, for the tools that take --lcm-url without the rest of addProcessOptions.
+// --lcm-url and --bus-layout alone, for the tools that take them without the rest of
+// addProcessOptions.
+void addLcmUrlOption(ArgParser& parser, std::string* lcm_url);
 void addBusLayoutOption(ArgParser& parser, ProcessOptions* options);
 // The command line of a flight process with no options of its own: --help (the description and
 // the exit codes), the process options; exits on --help or a bad option.
