@@ -204,6 +204,11 @@ int main(int argc, char** argv) {
     const std::string mode = argc >= 2 ? argv[1] : "";
     if (mode == "attack") return attack(argc - 1, argv + 1);
     if (mode == "check-replay" && argc == 5 && std::string(argv[3]) == "--copies") return checkReplay(argv[2], argv[4]);
-    throw std::invalid_argument("usage: hostile_peer attack --copies FILE [--at S] | hostile_peer check-replay FILE --copies FILE");
+    const char* usage = "usage: hostile_peer attack --copies FILE [--at S] | hostile_peer check-replay FILE --copies FILE";
+    if (mode == "--help" || mode == "-h") {
+      std::cout << usage << "\n";
+      return 0;
+    }
+    throw std::invalid_argument(usage);
   });
 }

@@ -228,7 +228,8 @@ int main(int argc, char** argv) {
     const std::string mode = argc >= 2 ? argv[1] : "";
     if (mode == "publish") return publish(argc - 1, argv + 1);
     if (mode == "check") return check(argc - 1, argv + 1);
-    std::cerr << "usage: logger_test_peer publish|check ... (--help on each)\n";
-    return 2;
+    const bool help = mode == "--help" || mode == "-h";
+    (help ? std::cout : std::cerr) << "usage: logger_test_peer publish|check ... (--help on each)\n";
+    return help ? 0 : 2;
   });
 }
