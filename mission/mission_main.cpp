@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     const std::string vehicle_path = options.config_path.empty() ? scenario.vehicle_path : options.config_path;
     const ConfigReader vehicle = loadVehicleConfig(vehicle_path);
     const auto trajectory_params = trajectory::TrajectoryParams::load(vehicle.child("trajectory"));
-    const LqrParams lqr = LqrParams::load(vehicle.child("lqr"));
+    const LqrParams lqr = LqrParams::loadWithVehicle(vehicle);  // with the model's rotor drag, as the controller
     // The controller's guard and transitions: what every trajectory is checked against besides lqr.
     const ConfigReader controller = vehicle.child("controller");
     const mission::PathLimits limits{

@@ -87,7 +87,7 @@ Sections loadSections(const Options& o) {
   Sections s;
   if (!o.config_path.empty()) {
     const ConfigReader root = loadVehicleConfig(o.config_path);
-    s.lqr = LqrParams::load(root.child("lqr"));
+    s.lqr = LqrParams::loadWithVehicle(root);  // the model's rotor drag: the check judges what is flown
     s.params = TrajectoryParams::load(root.child("trajectory"));
   }
   if (o.periodic) s.params.periodic = true;

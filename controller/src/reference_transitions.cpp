@@ -2,7 +2,7 @@
 // path, tracking it under the guard, and the exit to a hover.
 #include "sdlqr/controller/reference_generator.hpp"
 
-#include "sdlqr/controller/drag_feedforward.hpp"
+#include "sdlqr/trajectory/drag_feedforward.hpp"
 #include "sdlqr/math/quaternion.hpp"
 
 namespace sdlqr::controller {
@@ -17,7 +17,7 @@ bool ReferenceGenerator::guardTrips(const StateEstimate& estimate, const State& 
   // The attitude the law is asked to fly: with the model's rotor drag, the reference's remapped.
   State flown = reference;
   Input flown_input = input;
-  compensateRotorDrag(flown, flown_input, gravity_, lqr_.rotorDrag());
+  trajectory::compensateRotorDrag(flown, flown_input, gravity_, lqr_.rotorDrag());
   const trajectory::GuardTrip trip = trajectory::checkGuard(params_.guard, estimate.state(), flown);
   if (trip == trajectory::GuardTrip::kNone) return false;
   ++guard_aborts_;

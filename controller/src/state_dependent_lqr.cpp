@@ -5,8 +5,8 @@
 #include "sdlqr/math/lqr.hpp"
 #include "sdlqr/math/lqr_extensions.hpp"
 #include "sdlqr/math/quaternion.hpp"
-#include "sdlqr/controller/drag_feedforward.hpp"
 #include "sdlqr/controller/state_prediction.hpp"
+#include "sdlqr/trajectory/drag_feedforward.hpp"
 
 namespace sdlqr::controller {
 
@@ -269,7 +269,7 @@ bool StateDependentLqr::onStateEstimate(const StateEstimate& received, Tick& out
     return false;
   }
   status_.phase = references_.phase();
-  compensateRotorDrag(reference.x, reference.u, lqr_.params().gravity, lqr_.params().rotorDrag());
+  trajectory::compensateRotorDrag(reference.x, reference.u, lqr_.params().gravity, lqr_.params().rotorDrag());
 
   const LawTick law_tick = computeLaw(estimate, reference);
   const GainsFreshness freshness = law_tick.freshness;

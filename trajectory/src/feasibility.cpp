@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sdlqr/math/quaternion.hpp"
+#include "sdlqr/trajectory/drag_feedforward.hpp"
 
 namespace sdlqr::trajectory {
 
@@ -16,8 +17,10 @@ constexpr double kRelativeSlack = 1e-9;
 
 }  // namespace
 
-void accountSample(FeasibilityReport& report, const Vec3& velocity, const Input& u) {
-  report.max_speed = std::max(report.max_speed, velocity.norm());
+void accountSample(FeasibilityReport& report, const State& x, const Input& given, const FeasibilityLimits& limits,
+                   double gravity) {
+  const Input u = flownInput(x, given, gravity, limits.drag);
+  report.max_speed = std::max(report.max_speed, velocity(x).norm());
   report.max_thrust = std::max(report.max_thrust, u[kThrust]);
   report.min_thrust = std::min(report.min_thrust, u[kThrust]);
   report.max_body_rate = std::max(report.max_body_rate, bodyRate(u).norm());
@@ -39,6 +42,7 @@ FeasibilityLimits FeasibilityLimits::from(const LqrParams& lqr, double v_max, do
   limits.c_max = lqr.c_max;
   limits.omega_max = lqr.omega_max;
   limits.accel_mismatch_max = accel_mismatch_max;
+  limits.drag = lqr.rotorDrag();
   return limits;
 }
 
@@ -51,7 +55,7 @@ FeasibilityReport checkFeasibility(const MinSnapTrajectory& polynomial, const Fe
   for (long i = 0; i <= steps; ++i) {
     const FlatOutput flat = polynomial.evaluate(duration * static_cast<double>(i) / static_cast<double>(steps));
     const FlatReference ref = flatToReference(flat, gravity);
-    accountSample(report, flat.velocity, ref.u);
+    accountSample(report, ref.x, ref.u, limits, gravity);
     if (ref.singular) report.min_thrust = std::min(report.min_thrust, 0.0);
   }
   // The grid can miss the top speed by a hair; the refined search does not.
@@ -67,7 +71,7 @@ FeasibilityReport checkFeasibility(const Trajectory& trajectory, const Feasibili
     return Vec3(s.u[kThrust] * quat::bodyZ(orientation(s.x).normalized()) - Vec3(0.0, 0.0, gravity));
   };
   for (std::size_t k = 0; k < samples.size(); ++k) {
-    accountSample(report, velocity(samples[k].x), samples[k].u);
+    accountSample(report, samples[k].x, samples[k].u, limits, gravity);
     if (k == 0) continue;
     const double dt = samples[k].t - samples[k - 1].t;
     if (!(dt > 0.0)) continue;

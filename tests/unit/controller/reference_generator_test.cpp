@@ -303,6 +303,53 @@ TEST(ReferenceGenerator, APathBeyondTheLimitsIsRefusedByDefault) {
   EXPECT_EQ(gen.trajectoriesScaled(), 0);
 }
 
+// The agile vehicle (config/agile752.yaml): its limits and rotor drag, modelled (lqr.model_rotor_drag)
+// or not, and its 3 m circle at `speed`.
+LqrParams agileLqr(bool modelled) {
+  LqrParams lqr;
+  lqr.gravity = kDefaultGravity;
+  lqr.c_max = 45.0;
+  lqr.omega_max = 15.0;
+  lqr.vehicle_rotor_drag = Vec3(0.69, 0.69, 1.34);
+  lqr.model_rotor_drag = modelled;
+  return lqr;
+}
+
+Trajectory agileCircle(double speed) {
+  trajectory::ClosedPathSpec circle;
+  circle.size = 3.0;
+  circle.speed = speed;
+  circle.center = Vec3(0.0, 0.0, 2.0);
+  return trajectory::sampleClosedPath(circle, kDefaultGravity);
+}
+
+// GIVEN the agile vehicle and its circle at 10.5 m/s, whose drag-free thrust is within c_max WHEN it
+// arrives as a TRAJECTORY THEN with the drag modelled it is refused on the thrust the controller
+// would fly (max thrust); without the drag in the model it is accepted; with
+// trajectory_beyond_limits: scale it is flown at the speed feasible with the drag (issue 25).
+TEST(ReferenceGenerator, WithTheRotorDragModelledAnUploadIsJudgedOnTheThrustFlown) {
+  ControllerParams params;
+  params.guard.max_speed = 20.0;
+  ReferenceGenerator with_drag = hoveringAt(Vec3(3, 0, 2), params);
+  with_drag.setLimits(agileLqr(true));
+  const std::string why = with_drag.setTrajectory(agileCircle(10.5), 10000);
+  EXPECT_NE(why.find("max thrust"), std::string::npos) << why;
+  EXPECT_EQ(with_drag.phase(), FlightPhase::kHold);
+
+  ReferenceGenerator without = hoveringAt(Vec3(3, 0, 2), params);
+  without.setLimits(agileLqr(false));
+  EXPECT_EQ(without.setTrajectory(agileCircle(10.5), 10000), "");
+
+  params.trajectory_beyond_limits = UploadBeyondLimits::kScale;
+  ReferenceGenerator scaled = hoveringAt(Vec3(3, 0, 2), params);
+  scaled.setLimits(agileLqr(true));
+  ASSERT_EQ(scaled.setTrajectory(agileCircle(10.5), 10000), "");
+  EXPECT_EQ(scaled.trajectoriesScaled(), 1);
+  const double peak = trajectory::peakSpeed(scaled.tracker().trajectory());
+  EXPECT_LT(peak, 10.45);
+  EXPECT_GT(peak, 9.5);
+}
+
 // GIVEN the vehicle tilted 80 degrees while tracking WHEN the guard sees it THEN the trajectory is
 // aborted into a recovery: the reference is the vehicle itself, level and at rest, until it is
 // level and slow; then it holds there.

@@ -7,6 +7,7 @@
 
 #include "sdlqr/mission/trajectory_request.hpp"
 #include "sdlqr/trajectory/closed_paths.hpp"
+#include "sdlqr/trajectory/speed_fit.hpp"
 #include "sdlqr/trajectory/trajectory_csv.hpp"
 #include "test_paths.hpp"
 
@@ -97,6 +98,43 @@ TEST(TrajectoryCheck, APathWithoutAFlyableEntryIsRefused) {
   EXPECT_NE(refused.find("entry: none within 0.3 s"), std::string::npos) << refused;
   limits.transition.enabled = false;
   EXPECT_EQ(refusalOf(csvRequest(circle(3.0), "circle_3b.csv"), limits), "accepted") << "the old steps: unchecked";
+}
+
+// The agile vehicle (config/agile752.yaml): its limits, rotor drag modelled or not, its guard's speed.
+PathLimits agileLimits(bool drag_modelled) {
+  PathLimits limits = paperLimits();
+  limits.lqr.c_max = 45.0;
+  limits.lqr.omega_max = 15.0;
+  limits.lqr.vehicle_rotor_drag = Vec3(0.69, 0.69, 1.34);
+  limits.lqr.model_rotor_drag = drag_modelled;
+  limits.guard.max_speed = 20.0;
+  return limits;
+}
+
+// GIVEN the agile benchmark's 3 m circle at 10.5 m/s, within c_max without the drag WHEN the scenario
+// is loaded THEN with the rotor drag modelled the check refuses it on max thrust (what the controller
+// flies) and names the speed feasible with it; with the drag out of the model it is accepted; and
+// `on_infeasible: scale` from 11.5 m/s flies it slower with the drag than without.
+TEST(TrajectoryCheck, WithTheRotorDragModelledThePathIsJudgedOnTheThrustFlown) {
+  TrajectoryRequest request;
+  request.generator = "circle";
+  request.size = 3.0;
+  request.center = Vec3(0.0, 0.0, 2.0);
+  request.speed = 10.5;
+  const auto build = [&](bool drag) {
+    return buildTrajectory(request, trajectory::TrajectoryParams(), agileLimits(drag), Vec3(3.0, 0, 2.0), 0.0, "e");
+  };
+  const std::string refused = refusalOf(request, agileLimits(true));
+  EXPECT_NE(refused.find("max thrust"), std::string::npos) << refused;
+  EXPECT_NE(refused.find("feasible up to 10.3"), std::string::npos) << refused;
+  EXPECT_EQ(refusalOf(request, agileLimits(false)), "accepted");
+
+  request.speed = 11.5;
+  request.on_infeasible = OnInfeasible::kScale;
+  const double with_drag = trajectory::peakSpeed(build(true));
+  const double without = trajectory::peakSpeed(build(false));
+  EXPECT_LT(with_drag, 10.35);
+  EXPECT_GT(without, 11.0);
 }
 
 }  // namespace

@@ -1,6 +1,9 @@
 #pragma once
 // Is a reference flyable within the controller's limits? Top speed against v_max, and the
-// flatness inputs against the LQR input limits: c in [c_min, c_max], ||omega|| <= omega_max.
+// flatness inputs against the LQR input limits: c in [c_min, c_max], ||omega|| <= omega_max. The
+// inputs judged are those the controller flies: with the model's rotor drag (lqr.model_rotor_drag,
+// limits.drag) each point's reference remapped through the flat map with drag
+// (drag_feedforward.hpp flownInput), as given without.
 //
 // For a min-snap polynomial the inputs are exact (flatness) on a fine grid. For a sampled
 // trajectory (CSV, the ellipse) the samples' own inputs are checked, plus whether they agree with
@@ -24,6 +27,7 @@ struct FeasibilityLimits {
   double c_max = 18.0;              // [m/s^2]
   double omega_max = 2.0;           // [rad/s]
   double accel_mismatch_max = 0.5;  // [m/s^2] sampled trajectories only
+  RotorDrag drag;                   // the controllers' model's (LqrParams::rotorDrag): none by default
 
   static FeasibilityLimits from(const LqrParams& lqr, double v_max, double accel_mismatch_max);
 };
@@ -44,9 +48,10 @@ struct FeasibilityReport {
   bool feasible() const { return speed_ok && max_thrust_ok && min_thrust_ok && body_rate_ok && consistency_ok; }
 };
 
-// The building blocks of every check: one point's speed and inputs into the report's extremes, then
-// the verdicts against the limits.
-void accountSample(FeasibilityReport& report, const Vec3& velocity, const Input& u);
+// The building blocks of every check: one reference point's speed and the inputs flown for it
+// (flownInput against limits.drag) into the report's extremes, then the verdicts against the limits.
+void accountSample(FeasibilityReport& report, const State& x, const Input& u, const FeasibilityLimits& limits,
+                   double gravity);
 void judgeReport(FeasibilityReport& report, const FeasibilityLimits& limits);
 
 FeasibilityReport checkFeasibility(const MinSnapTrajectory& polynomial, const FeasibilityLimits& limits,

@@ -1,4 +1,4 @@
-#include "sdlqr/controller/drag_feedforward.hpp"
+#include "sdlqr/trajectory/drag_feedforward.hpp"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 #include "sdlqr/trajectory/flatness.hpp"
 #include "sdlqr/trajectory/transition.hpp"
 
-namespace sdlqr::controller {
+namespace sdlqr::trajectory {
 
 namespace {
 
@@ -25,15 +25,15 @@ double headingRate(const Mat3& r, const Vec3& omega, double yaw) {
 void compensateRotorDrag(State& x, Input& u, double gravity, const RotorDrag& drag) {
   if (!drag.active()) return;
   const Quat q = orientation(x).normalized();
-  const trajectory::FlatState state = trajectory::flatStateOf(x, u, 0.0, gravity);
-  trajectory::FlatOutput flat;
+  const FlatState state = flatStateOf(x, u, 0.0, gravity);
+  FlatOutput flat;
   flat.position = state.position;
   flat.velocity = state.velocity;
   flat.acceleration = state.acceleration;
   flat.jerk = state.jerk;
   flat.yaw = state.yaw;
   flat.yaw_rate = headingRate(quat::rotationMatrix(q), bodyRate(u), state.yaw);
-  const trajectory::FlatReference with_drag = trajectory::flatToReference(flat, gravity, drag);
+  const FlatReference with_drag = flatToReference(flat, gravity, drag);
   if (with_drag.singular) return;
   Quat q_drag = orientation(with_drag.x);
   if (q_drag.dot(q) < 0.0) q_drag = -q_drag;
@@ -41,4 +41,11 @@ void compensateRotorDrag(State& x, Input& u, double gravity, const RotorDrag& dr
   u = with_drag.u;
 }
 
-}  // namespace sdlqr::controller
+Input flownInput(const State& x, const Input& u, double gravity, const RotorDrag& drag) {
+  State flown_x = x;
+  Input flown_u = u;
+  compensateRotorDrag(flown_x, flown_u, gravity, drag);
+  return flown_u;
+}
+
+}  // namespace sdlqr::trajectory

@@ -1,13 +1,13 @@
-// The controller's feed-forward against the model's rotor drag (drag_feedforward.hpp, issue 25).
+// The controller's feed-forward (and what the feasibility check judges) against the model's rotor drag (drag_feedforward.hpp, issue 25).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "sdlqr/controller/drag_feedforward.hpp"
+#include "sdlqr/trajectory/drag_feedforward.hpp"
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/trajectory/flatness.hpp"
 
-namespace sdlqr::controller {
+namespace sdlqr::trajectory::feedforward_test {
 namespace {
 
 constexpr double kG = 9.81;
@@ -21,9 +21,9 @@ RotorDrag agileDrag() {
 
 // A point of a level 3 m circle at 8 m/s (its thrust is constant: the jerk lies across z_b, the
 // case where the reference's missing thrust rate is exactly zero), heading turning with it.
-trajectory::FlatOutput circlePoint(double angle) {
+FlatOutput circlePoint(double angle) {
   const double radius = 3.0, speed = 8.0, rate = speed / radius;
-  trajectory::FlatOutput flat;
+  FlatOutput flat;
   flat.position = Vec3(radius * std::cos(angle), radius * std::sin(angle), 2.0);
   flat.velocity = speed * Vec3(-std::sin(angle), std::cos(angle), 0.0);
   flat.acceleration = -speed * rate * Vec3(std::cos(angle), std::sin(angle), 0.0);
@@ -38,8 +38,8 @@ trajectory::FlatOutput circlePoint(double angle) {
 // rates are those of the flat map with drag.
 TEST(DragFeedForward, TheRemappedReferenceFliesThePathThroughTheModelWithDrag) {
   for (double angle : {0.0, 1.0, 2.5, -2.0}) {
-    const trajectory::FlatOutput flat = circlePoint(angle);
-    const trajectory::FlatReference drag_free = trajectory::flatToReference(flat, kG);
+    const FlatOutput flat = circlePoint(angle);
+    const FlatReference drag_free = flatToReference(flat, kG);
     State x = drag_free.x;
     Input u = drag_free.u;
     compensateRotorDrag(x, u, kG, agileDrag());
@@ -47,7 +47,7 @@ TEST(DragFeedForward, TheRemappedReferenceFliesThePathThroughTheModelWithDrag) {
     EXPECT_LT((velocity(f) - flat.acceleration).norm(), 1e-9) << "angle " << angle;
     EXPECT_EQ(position(x), position(drag_free.x));
     EXPECT_EQ(velocity(x), velocity(drag_free.x));
-    const trajectory::FlatReference expected = trajectory::flatToReference(flat, kG, agileDrag());
+    const FlatReference expected = flatToReference(flat, kG, agileDrag());
     EXPECT_LT(quat::boxMinus(orientation(x), orientation(expected.x)).norm(), 1e-9);
     EXPECT_LT((u - expected.u).norm(), 1e-8) << "angle " << angle << ": " << u.transpose() << " vs "
                                              << expected.u.transpose();
@@ -58,7 +58,7 @@ TEST(DragFeedForward, TheRemappedReferenceFliesThePathThroughTheModelWithDrag) {
 
 // No drag (lqr.model_rotor_drag off): the reference is left as it was, bit for bit.
 TEST(DragFeedForward, WithoutDragTheReferenceIsUnchanged) {
-  const trajectory::FlatReference drag_free = trajectory::flatToReference(circlePoint(0.7), kG);
+  const FlatReference drag_free = flatToReference(circlePoint(0.7), kG);
   State x = drag_free.x;
   Input u = drag_free.u;
   compensateRotorDrag(x, u, kG, RotorDrag{});
@@ -67,4 +67,4 @@ TEST(DragFeedForward, WithoutDragTheReferenceIsUnchanged) {
 }
 
 }  // namespace
-}  // namespace sdlqr::controller
+}  // namespace sdlqr::trajectory::feedforward_test

@@ -1,0 +1,108 @@
+// The feasibility check and the speed fit judge the inputs the controller flies (issue 25): with the
+// model's rotor drag (lqr.model_rotor_drag) each sample's thrust and body rates are those of the
+// controller's remap (drag_feedforward.hpp), so a path whose thrust is within c_max only without the
+// drag is refused, and `on_infeasible: scale` fits the speed the vehicle manages with it.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "sdlqr/trajectory/closed_paths.hpp"
+#include "sdlqr/trajectory/drag_feedforward.hpp"
+#include "sdlqr/trajectory/feasibility.hpp"
+#include "sdlqr/trajectory/speed_fit.hpp"
+
+namespace sdlqr::trajectory::drag_feasibility_test {
+namespace {
+
+constexpr double kG = 9.81;
+
+// The agile vehicle's limits and rotor drag (config/agile752.yaml); `modelled`: lqr.model_rotor_drag.
+LqrParams agileLqr(bool modelled) {
+  LqrParams lqr;
+  lqr.gravity = kG;
+  lqr.c_max = 45.0;
+  lqr.omega_max = 15.0;
+  lqr.vehicle_rotor_drag = Vec3(0.69, 0.69, 1.34);
+  lqr.model_rotor_drag = modelled;
+  return lqr;
+}
+
+FeasibilityLimits agileLimits(bool modelled) {
+  return FeasibilityLimits::from(agileLqr(modelled), 20.0, std::numeric_limits<double>::infinity());
+}
+
+// The agile benchmark's circle: 3 m radius, level, at `speed`.
+Trajectory agileCircle(double speed) {
+  ClosedPathSpec spec;
+  spec.size = 3.0;
+  spec.speed = speed;
+  spec.center = Vec3(0.0, 0.0, 2.0);
+  return sampleClosedPath(spec, kG);
+}
+
+// GIVEN the 3 m circle at 10.5 m/s, whose drag-free thrust is within c_max (45 m/s^2) WHEN the model
+// has the rotor drag THEN the check refuses it on max thrust, with the largest thrust the controller's
+// remap flies; without the drag in the model (the switch off) the same vehicle accepts it.
+TEST(DragFeasibility, APathWithinCmaxOnlyWithoutTheDragIsRefusedOnMaxThrust) {
+  const Trajectory path = agileCircle(10.5);
+  const FeasibilityReport free = checkFeasibility(path, agileLimits(false), kG);
+  EXPECT_TRUE(free.feasible()) << describeViolations(free, agileLimits(false));
+  EXPECT_LT(free.max_thrust, 45.0);
+
+  const FeasibilityReport with_drag = checkFeasibility(path, agileLimits(true), kG);
+  EXPECT_FALSE(with_drag.max_thrust_ok);
+  EXPECT_FALSE(with_drag.feasible());
+  EXPECT_GT(with_drag.max_thrust, 45.0);
+  EXPECT_NE(describeViolations(with_drag, agileLimits(true)).find("max thrust"), std::string::npos);
+
+  // The thrust judged is the controller's: the remap of each sample (one computation for both).
+  double flown_max = 0.0;
+  for (const TrajectorySample& s : path.samples) {
+    State x = s.x;
+    Input u = s.u;
+    compensateRotorDrag(x, u, kG, agileLqr(true).rotorDrag());
+    flown_max = std::max(flown_max, u[kThrust]);
+  }
+  EXPECT_EQ(with_drag.max_thrust, flown_max);
+}
+
+// No drag in the model: the check is the drag-free one, bit for bit (every report field).
+TEST(DragFeasibility, WithoutTheDragModelledTheReportIsTheDragFreeOne) {
+  const Trajectory path = agileCircle(8.0);
+  FeasibilityLimits none = agileLimits(false);
+  ASSERT_FALSE(none.drag.active());
+  const FeasibilityReport report = checkFeasibility(path, none, kG);
+  double max_thrust = 0.0, max_rate = 0.0;
+  for (const TrajectorySample& s : path.samples) {
+    max_thrust = std::max(max_thrust, s.u[kThrust]);
+    max_rate = std::max(max_rate, bodyRate(s.u).norm());
+  }
+  EXPECT_EQ(report.max_thrust, max_thrust);
+  EXPECT_EQ(report.max_body_rate, max_rate);
+}
+
+// GIVEN the circle asked at 11.5 m/s, beyond the vehicle either way WHEN the speed is fitted (the
+// generator's, and the time scaling of a given path: a CSV or an uploaded TRAJECTORY) THEN with the
+// drag modelled the speed is lower than the drag-free fit, feasible with the drag, and the drag-free
+// fit's speed is not.
+TEST(DragFeasibility, TheScaledSpeedIsTheOneFeasibleWithTheDrag) {
+  const auto generate = [](double speed) { return agileCircle(speed); };
+  const SpeedFit free = fitSpeed(generate, 11.5, agileLimits(false), kG);
+  const SpeedFit with_drag = fitSpeed(generate, 11.5, agileLimits(true), kG);
+  std::printf("  3 m circle asked at 11.5 m/s: feasible up to %.3f m/s with the drag, %.3f m/s without\n",
+              with_drag.feasible_speed, free.feasible_speed);
+  ASSERT_GT(with_drag.feasible_speed, 0.0);
+  EXPECT_LT(with_drag.feasible_speed, free.feasible_speed - 0.5);
+  EXPECT_TRUE(checkFeasibility(with_drag.trajectory, agileLimits(true), kG).feasible());
+  EXPECT_FALSE(checkFeasibility(free.trajectory, agileLimits(true), kG).max_thrust_ok);
+
+  const SpeedFit scaled = fitSpeed(givenPathAtSpeed(agileCircle(11.5), kG), 11.5, agileLimits(true), kG);
+  EXPECT_NEAR(scaled.feasible_speed, with_drag.feasible_speed, 0.02 * with_drag.feasible_speed);
+  EXPECT_TRUE(checkFeasibility(scaled.trajectory, agileLimits(true), kG).feasible());
+}
+
+}  // namespace
+}  // namespace sdlqr::trajectory::drag_feasibility_test
