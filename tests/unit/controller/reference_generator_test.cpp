@@ -7,6 +7,7 @@
 
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/controller/reference_generator.hpp"
+#include "agile_vehicle.hpp"
 #include "controller_test_commands.hpp"
 #include "sdlqr/math/model.hpp"
 #include "sdlqr/trajectory/closed_paths.hpp"
@@ -303,31 +304,13 @@ TEST(ReferenceGenerator, APathBeyondTheLimitsIsRefusedByDefault) {
   EXPECT_EQ(gen.trajectoriesScaled(), 0);
 }
 
-// The agile vehicle (config/agile752.yaml): its limits and rotor drag, modelled (lqr.model_rotor_drag)
-// or not, and its 3 m circle at `speed`.
-LqrParams agileLqr(bool modelled) {
-  LqrParams lqr;
-  lqr.gravity = kDefaultGravity;
-  lqr.c_max = 45.0;
-  lqr.omega_max = 15.0;
-  lqr.vehicle_rotor_drag = Vec3(0.69, 0.69, 1.34);
-  lqr.model_rotor_drag = modelled;
-  return lqr;
-}
-
-Trajectory agileCircle(double speed) {
-  trajectory::ClosedPathSpec circle;
-  circle.size = 3.0;
-  circle.speed = speed;
-  circle.center = Vec3(0.0, 0.0, 2.0);
-  return trajectory::sampleClosedPath(circle, kDefaultGravity);
-}
-
 // GIVEN the agile vehicle and its circle at 10.5 m/s, whose drag-free thrust is within c_max WHEN it
 // arrives as a TRAJECTORY THEN with the drag modelled it is refused on the thrust the controller
 // would fly (max thrust); without the drag in the model it is accepted; with
 // trajectory_beyond_limits: scale it is flown at the speed feasible with the drag (issue 25).
 TEST(ReferenceGenerator, WithTheRotorDragModelledAnUploadIsJudgedOnTheThrustFlown) {
+  using sdlqr::test::agileCircle;
+  using sdlqr::test::agileLqr;
   ControllerParams params;
   params.guard.max_speed = 20.0;
   ReferenceGenerator with_drag = hoveringAt(Vec3(3, 0, 2), params);

@@ -9,6 +9,7 @@
 #include "sdlqr/trajectory/closed_paths.hpp"
 #include "sdlqr/trajectory/speed_fit.hpp"
 #include "sdlqr/trajectory/trajectory_csv.hpp"
+#include "agile_vehicle.hpp"
 #include "test_paths.hpp"
 
 namespace sdlqr::mission {
@@ -103,10 +104,7 @@ TEST(TrajectoryCheck, APathWithoutAFlyableEntryIsRefused) {
 // The agile vehicle (config/agile752.yaml): its limits, rotor drag modelled or not, its guard's speed.
 PathLimits agileLimits(bool drag_modelled) {
   PathLimits limits = paperLimits();
-  limits.lqr.c_max = 45.0;
-  limits.lqr.omega_max = 15.0;
-  limits.lqr.vehicle_rotor_drag = Vec3(0.69, 0.69, 1.34);
-  limits.lqr.model_rotor_drag = drag_modelled;
+  limits.lqr = test::agileLqr(drag_modelled);
   limits.guard.max_speed = 20.0;
   return limits;
 }

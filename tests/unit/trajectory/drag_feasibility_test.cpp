@@ -9,38 +9,21 @@
 #include <limits>
 #include <string>
 
-#include "sdlqr/trajectory/closed_paths.hpp"
 #include "sdlqr/trajectory/drag_feedforward.hpp"
 #include "sdlqr/trajectory/feasibility.hpp"
 #include "sdlqr/trajectory/speed_fit.hpp"
+#include "agile_vehicle.hpp"
 
 namespace sdlqr::trajectory::drag_feasibility_test {
 namespace {
 
 constexpr double kG = 9.81;
 
-// The agile vehicle's limits and rotor drag (config/agile752.yaml); `modelled`: lqr.model_rotor_drag.
-LqrParams agileLqr(bool modelled) {
-  LqrParams lqr;
-  lqr.gravity = kG;
-  lqr.c_max = 45.0;
-  lqr.omega_max = 15.0;
-  lqr.vehicle_rotor_drag = Vec3(0.69, 0.69, 1.34);
-  lqr.model_rotor_drag = modelled;
-  return lqr;
-}
+using test::agileCircle;
+using test::agileLqr;
 
 FeasibilityLimits agileLimits(bool modelled) {
   return FeasibilityLimits::from(agileLqr(modelled), 20.0, std::numeric_limits<double>::infinity());
-}
-
-// The agile benchmark's circle: 3 m radius, level, at `speed`.
-Trajectory agileCircle(double speed) {
-  ClosedPathSpec spec;
-  spec.size = 3.0;
-  spec.speed = speed;
-  spec.center = Vec3(0.0, 0.0, 2.0);
-  return sampleClosedPath(spec, kG);
 }
 
 // GIVEN the 3 m circle at 10.5 m/s, whose drag-free thrust is within c_max (45 m/s^2) WHEN the model

@@ -1,0 +1,29 @@
+#pragma once
+// The agile vehicle of the tests (config/agile752.yaml): its lqr limits and rotor drag, the drag in
+// the controllers' model or not (lqr.model_rotor_drag), and its benchmark's 3 m circle at a speed.
+
+#include "sdlqr/math/lqr_params.hpp"
+#include "sdlqr/trajectory/closed_paths.hpp"
+
+namespace sdlqr::test {
+
+inline LqrParams agileLqr(bool drag_modelled) {
+  LqrParams lqr;
+  lqr.gravity = kDefaultGravity;
+  lqr.c_max = 45.0;
+  lqr.omega_max = 15.0;
+  lqr.vehicle_rotor_drag = Vec3(0.69, 0.69, 1.34);
+  lqr.model_rotor_drag = drag_modelled;
+  return lqr;
+}
+
+// 3 m radius, level at 2 m, centred on the origin, at `speed` [m/s].
+inline Trajectory agileCircle(double speed) {
+  trajectory::ClosedPathSpec circle;
+  circle.size = 3.0;
+  circle.speed = speed;
+  circle.center = Vec3(0.0, 0.0, 2.0);
+  return trajectory::sampleClosedPath(circle, kDefaultGravity);
+}
+
+}  // namespace sdlqr::test
