@@ -64,6 +64,16 @@ std::vector<long long> sweepSeeds(const Benchmark& benchmark, const mission::Sce
   return benchmark.sweep.seeds.empty() ? std::vector<long long>{scenario.seed} : benchmark.sweep.seeds;
 }
 
+bool sweepFlightPasses(const analysis::FlightReport& report, const std::vector<std::string>& fail_on) {
+  int judged = 0, passed = 0;
+  for (const analysis::Check& c : report.checks) {
+    if (std::find(fail_on.begin(), fail_on.end(), c.key) == fail_on.end()) continue;
+    ++judged;
+    passed += c.pass ? 1 : 0;
+  }
+  return judged > 0 && passed == judged && !report.crashed;
+}
+
 SweepFlight flySweepSpeed(const batch::BatchContext& context, const std::vector<std::string>& fail_on,
                           const std::string& controller, double speed, const std::vector<long long>& seeds) {
   SweepFlight f;
@@ -75,14 +85,10 @@ SweepFlight flySweepSpeed(const batch::BatchContext& context, const std::vector<
     world.scenario.seed = seed;
     const analysis::FlightReport r = batch::fly(context, world, controller).report;
     const std::string prefix = seeds.size() > 1 ? "seed " + std::to_string(seed) + ": " : "";
-    int judged = 0, passed = 0;
     for (const analysis::Check& c : r.checks) {
       if (!c.pass) f.failed.push_back(prefix + c.name);
-      if (std::find(fail_on.begin(), fail_on.end(), c.key) == fail_on.end()) continue;
-      ++judged;
-      passed += c.pass ? 1 : 0;
     }
-    f.pass = f.pass && judged > 0 && passed == judged;
+    f.pass = f.pass && sweepFlightPasses(r, fail_on);
     worst(f.path_error_rms, batch::largestOf(r.trajectories, [](const analysis::PathTrackingReport& t) { return t.path_error_rms; }));
     worst(f.path_error_max, batch::largestOf(r.trajectories, [](const analysis::PathTrackingReport& t) { return t.path_error_max; }));
     worst(f.max_tilt_deg, r.max_tilt_deg);

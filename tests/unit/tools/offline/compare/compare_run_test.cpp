@@ -176,6 +176,21 @@ TEST(SpeedSweep, EachSpeedFliesEverySeedAndPassesOnlyWhenEveryOnePasses) {
   EXPECT_EQ(sweepSeeds(b, context.scenario), std::vector<long long>{9});
 }
 
+// A real slow flight's report passes its fail_on checks; the same report with a crash (as after the
+// path, in the exit or the landing), or with no fail_on check judged, is no passing speed.
+TEST(SpeedSweep, AFlightThatCrashedOrJudgedNoFailOnCheckFailsItsSpeed) {
+  const Benchmark b = Benchmark::load(kDir + "/small_benchmark.yaml");
+  const batch::BatchContext context = scenarioContext(b.sweep.scenario_path, {"sdlqr"}, -1);
+  batch::FlightWorld world{{context.config.vehicle, context.config.sim}, atSpeed(context.scenario, 1.0)};
+  analysis::FlightReport report = batch::fly(context, world, "sdlqr").report;
+  ASSERT_FALSE(report.crashed);
+  ASSERT_TRUE(sweepFlightPasses(report, b.sweep.fail_on));
+  analysis::FlightReport crashed = report;
+  crashed.crashed = true;
+  EXPECT_FALSE(sweepFlightPasses(crashed, b.sweep.fail_on));
+  EXPECT_FALSE(sweepFlightPasses(report, {"no_such_criterion"}));
+}
+
 TEST(SpeedSweep, ASpeedBeyondTheVehicleIsRefusedForEveryControllerNotFlown) {
   Benchmark b = Benchmark::load(kDir + "/small_benchmark.yaml");
   b.experiments.clear();

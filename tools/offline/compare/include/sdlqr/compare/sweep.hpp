@@ -25,7 +25,7 @@ mission::Scenario atSpeed(const mission::Scenario& scenario, double speed);
 struct SweepFlight {
   double speed = 0.0;                  // [m/s]
   bool feasible = true;
-  bool pass = false;                   // every fail_on check passed, and at least one was judged
+  bool pass = false;                   // every fail_on check passed, at least one was judged, no crash
   std::vector<std::string> failed;     // the flight's failed checks (fail_on or not)
   double path_error_rms = std::numeric_limits<double>::quiet_NaN();  // [m] worst trajectory
   double path_error_max = std::numeric_limits<double>::quiet_NaN();
@@ -44,6 +44,11 @@ struct SweepResult {
 // Per speed of the sweep, empty when the path is feasible there, else the verdict
 // ("events[3].trajectory: at 5 m/s the path is beyond the vehicle: ...").
 std::vector<std::string> sweepRefusals(const batch::BatchContext& context, const std::vector<double>& speeds);
+
+// One flight of a sweep passes when it judged at least one `fail_on` check, passed every one of them
+// and did not crash: a crash after the path's errors were measured (in the exit, the hold, the
+// landing) is no speed "flown within its criteria".
+bool sweepFlightPasses(const analysis::FlightReport& report, const std::vector<std::string>& fail_on);
 
 // One speed: a flight per seed, judged on `fail_on`; it passes when every seed's flight passes, its
 // path errors and tilt are the worst seed's, its failed checks every seed's ("seed 1: crashed").
