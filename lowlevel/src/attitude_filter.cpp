@@ -8,24 +8,14 @@
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/lowlevel/low_pass.hpp"
 
+#include "attitude_filter_rows.hpp"
+
 namespace sdlqr::lowlevel {
 
 AttitudeFilterParams::AttitudeFilterParams() { declaration().setDefaults(*this); }
 
 const ParamTable<AttitudeFilterParams>& AttitudeFilterParams::declaration() {
-  static const ParamTable<AttitudeFilterParams> table = [] {
-    using P = AttitudeFilterParams;
-    ParamTable<P> t("IMU-only attitude and vertical velocity the failsafe flies on");
-    t.number("flight_gain", &P::flight_gain, 0.2, "1/s", Range::closed(0.0, 50.0), "accelerometer levelling rate in flight");
-    t.number("ground_gain", &P::ground_gain, 2.0, "1/s", Range::closed(0.0, 50.0),
-             "accelerometer levelling rate at rest on the ground");
-    t.number("accel_gate", &P::accel_gate, 0.15, "-", Range::open(0.0, 1.0), "level only while | |f| - g | < gate * g");
-    t.number("bias_time_constant", &P::bias_time_constant, 0.5, "s", Range::above(0.0),
-             "gyro bias / vertical offset learning at rest");
-    t.number("velocity_leak_time", &P::velocity_leak_time, 3.0, "s", Range::atLeast(0.0),
-             "vertical velocity leak in normal flight (0: none)");
-    return t;
-  }();
+  static const ParamTable<AttitudeFilterParams> table = attitudeFilterParamsRows();
   return table;
 }
 

@@ -7,6 +7,8 @@
 
 #include "sdlqr/math/quaternion.hpp"
 
+#include "failsafe_rows.hpp"
+
 namespace sdlqr::lowlevel {
 
 FailsafeParams::FailsafeParams() { declaration().setDefaults(*this); }
@@ -14,25 +16,7 @@ FailsafeParams::FailsafeParams() { declaration().setDefaults(*this); }
 const ParamTable<FailsafeParams>& FailsafeParams::declaration() {
   static const ParamTable<FailsafeParams> table = [] {
     using P = FailsafeParams;
-    ParamTable<P> t("what the bodyrate loop flies when RATE_CMD goes silent");
-    t.number("descent_rate", &P::descent_rate, 0.5, "m/s", Range::openClosed(0.0, 3.0), "sink rate");
-    t.number("velocity_gain", &P::velocity_gain, 2.0, "1/s", Range::openClosed(0.0, 50.0),
-             "thrust (m/s^2) per m/s of vertical velocity error");
-    // The integral absorbs a wrong hover thrust (battery sag, a learned value still high after a
-    // climb), which a proportional term alone would turn into a hover instead of a descent.
-    t.number("velocity_integral_gain", &P::velocity_integral_gain, 1.0, "1/s^2", Range::closed(0.0, 50.0),
-             "thrust (m/s^2) per m of integrated error");
-    t.number("attitude_gain", &P::attitude_gain, 5.0, "1/s", Range::openClosed(0.0, 50.0),
-             "levelling body rate per radian of tilt");
-    t.number("max_rate", &P::max_rate, 3.0, "rad/s", Range::above(0.0),
-             "bound on the levelling rate (at most validation.max_body_rate)");
-    t.number("thrust_min_ratio", &P::thrust_min_ratio, 0.6, "-", Range::closedOpen(0.0, 1.0),
-             "thrust bounds as multiples of hover thrust");
-    t.number("thrust_max_ratio", &P::thrust_max_ratio, 1.5, "-", Range::openClosed(1.0, 4.0), "upper thrust bound");
-    t.number("velocity_leak_time", &P::velocity_leak_time, 20.0, "s", Range::atLeast(0.0),
-             "vertical velocity leak while descending (0: none)");
-    t.number("touchdown_time", &P::touchdown_time, 0.3, "s", Range::openClosed(0.0, 10.0), "at rest without descending -> disarm");
-    t.number("impact_rest_time", &P::impact_rest_time, 0.1, "s", Range::above(0.0), "the same after an impact spike");
+    ParamTable<FailsafeParams> t = failsafeParamsRows();
     t.check("impact_rest_time", [](const P& p) { return p.impact_rest_time <= p.touchdown_time; },
             "must be <= touchdown_time");
     return t;

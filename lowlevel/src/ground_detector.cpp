@@ -4,24 +4,14 @@
 
 #include "sdlqr/lowlevel/low_pass.hpp"
 
+#include "ground_detector_rows.hpp"
+
 namespace sdlqr::lowlevel {
 
 GroundDetectorParams::GroundDetectorParams() { declaration().setDefaults(*this); }
 
 const ParamTable<GroundDetectorParams>& GroundDetectorParams::declaration() {
-  static const ParamTable<GroundDetectorParams> table = [] {
-    using P = GroundDetectorParams;
-    ParamTable<P> t("ground contact seen through the IMU alone");
-    t.number("filter_cutoff_hz", &P::filter_cutoff_hz, 5.0, "Hz", Range::openClosed(0.0, 100.0), "low-pass on |f| and |omega|");
-    t.number("accel_tolerance", &P::accel_tolerance, 0.5, "m/s^2", Range::open(0.0, 5.0), "at rest: | |f| - g | below this");
-    t.number("gyro_tolerance", &P::gyro_tolerance, 0.2, "rad/s", Range::open(0.0, 5.0), "at rest: |omega| below this");
-    t.number("impact_threshold", &P::impact_threshold, 5.0, "m/s^2", Range::above(0.0),
-             "body-z specific force above the rotors' share");
-    t.number("landed_thrust_ratio", &P::landed_thrust_ratio, 0.8, "-", Range::open(0.0, 1.0),
-             "thrust command below ratio * hover counts as landing");
-    t.number("landed_time", &P::landed_time, 1.0, "s", Range::above(0.0), "at rest with thrust below hover -> auto-disarm");
-    return t;
-  }();
+  static const ParamTable<GroundDetectorParams> table = groundDetectorParamsRows();
   return table;
 }
 

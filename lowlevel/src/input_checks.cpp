@@ -2,25 +2,15 @@
 
 #include <cmath>
 
+#include "input_checks_rows.hpp"
+
 
 namespace sdlqr::lowlevel {
 
 InputLimits::InputLimits() { declaration().setDefaults(*this); }
 
 const ParamTable<InputLimits>& InputLimits::declaration() {
-  static const ParamTable<InputLimits> table = [] {
-    using P = InputLimits;
-    ParamTable<P> t("checks of what arrives from the bus (RATE_CMD |omega|: validation.max_body_rate)");
-    t.number("max_command_lead", &P::max_command_lead, 0.1, "s", Range::closed(0.0, 10.0),
-             "RATE_CMD utime allowed ahead of IMU time");
-    t.number("max_gyro", &P::max_gyro, 35.0, "rad/s", Range::openClosed(0.0, 1000.0),
-             "IMU range per axis: beyond a 2000 deg/s gyro's range");
-    t.number("max_accel", &P::max_accel, 160.0, "m/s^2", Range::openClosed(10.0, 10000.0),
-             "IMU range per axis: beyond a 16 g accelerometer's range");
-    t.number("max_imu_gap", &P::max_imu_gap, 1.0, "s", Range::openClosed(0.0, 60.0),
-             "larger forward jumps of IMU time are rejected");
-    return t;
-  }();
+  static const ParamTable<InputLimits> table = inputLimitsRows();
   return table;
 }
 

@@ -7,6 +7,8 @@
 
 #include <Eigen/QR>
 
+#include "mixer_rows.hpp"
+
 
 namespace sdlqr::lowlevel {
 
@@ -24,14 +26,7 @@ double clampToInterval(double value, double low, double high) {
 MixerParams::MixerParams() { declaration().setDefaults(*this); }
 
 const ParamTable<MixerParams>& MixerParams::declaration() {
-  static const ParamTable<MixerParams> table = [] {
-    using P = MixerParams;
-    ParamTable<P> t("control allocation with sequential desaturation");
-    // Yaw matters less than altitude, but at zero share a vehicle at full thrust could not turn.
-    t.number("yaw_collective_share", &P::yaw_collective_share, 0.15, "-", Range::closed(0.0, 1.0),
-             "collective thrust yaw may take (or add), as a fraction of the demanded collective");
-    return t;
-  }();
+  static const ParamTable<MixerParams> table = mixerParamsRows();
   return table;
 }
 

@@ -5,27 +5,14 @@
 
 #include "sdlqr/lowlevel/low_pass.hpp"
 
+#include "rate_control_rows.hpp"
+
 namespace sdlqr::lowlevel {
 
 RateControlParams::RateControlParams() { declaration().setDefaults(*this); }
 
 const ParamTable<RateControlParams>& RateControlParams::declaration() {
-  static const ParamTable<RateControlParams> table = [] {
-    using P = RateControlParams;
-    ParamTable<P> t("body-rate PID per axis (roll, pitch, yaw)");
-    // Tuned on a rigid body with the default inertia and a 30 ms motor lag: a 1 rad/s roll or
-    // pitch step settles to 2 % in about 65 ms with < 1 % overshoot (tests/unit/lowlevel).
-    // Yaw is slower on purpose: rotor drag gives it a tenth of the roll authority.
-    t.list("p", &P::p, {120.0, 120.0, 12.0}, "1/s", Range::above(0.0), "rad/s^2 per rad/s of rate error (roll, pitch, yaw)");
-    t.list("i", &P::i, {30.0, 30.0, 1.0}, "1/s^2", Range::atLeast(0.0), "rad/s^2 per rad of integrated rate error");
-    t.list("d", &P::d, {2.0, 2.0, 0.0}, "-", Range::atLeast(0.0), "rad/s^2 per rad/s^2 of measured rate change");
-    t.list("integral_limit", &P::integral_limit, {30.0, 30.0, 10.0}, "rad/s^2", Range::atLeast(0.0),
-           "bound of the integral term");
-    // Above a few hundred hertz the filter would pass the 1 kHz sampling noise untouched.
-    t.number("d_cutoff_hz", &P::d_cutoff_hz, 40.0, "Hz", Range::openClosed(0.0, 400.0), "low-pass on the gyro derivative");
-    t.flag("gyroscopic_feedforward", &P::gyroscopic_feedforward, true, "add omega x J omega to the torque");
-    return t;
-  }();
+  static const ParamTable<RateControlParams> table = rateControlParamsRows();
   return table;
 }
 

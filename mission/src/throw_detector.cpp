@@ -2,29 +2,14 @@
 
 #include "sdlqr/math/quaternion.hpp"
 
+#include "throw_detector_rows.hpp"
+
 namespace sdlqr::mission {
 
 ThrowModeParams::ThrowModeParams() { declaration().setDefaults(*this); }
 
 const ParamTable<ThrowModeParams>& ThrowModeParams::declaration() {
-  static const ParamTable<ThrowModeParams> table = [] {
-    using P = ThrowModeParams;
-    ParamTable<P> t("throw mode (ArduPilot's): motors stopped until a throw or drop is detected, then hold");
-    t.number("at", &P::at, -1.0, "s", Range::closed(-1.0, 3600.0), "armed for a throw from here; < 0: off");
-    t.choice("type", &P::type, ThrowType::kThrow, {{"throw", ThrowType::kThrow}, {"drop", ThrowType::kDrop}},
-             "throw: thrown upwards (climbs); drop: let fall");
-    t.number("vertical_speed", &P::vertical_speed, 0.5, "m/s", Range::above(0.0),
-             "climbing (throw) or sinking (drop) faster than this");
-    t.number("high_speed", &P::high_speed, 5.0, "m/s", Range::above(0.0), "or faster than this in total");
-    t.number("free_fall_fraction", &P::free_fall_fraction, 0.25, "-", Range::open(0.0, 1.0),
-             "vertical specific force below this fraction of g is free fall");
-    t.number("confirm_velocity_drop", &P::confirm_velocity_drop, 2.5, "m/s", Range::above(0.0),
-             "the vertical velocity falls this much ...");
-    t.number("confirm_window", &P::confirm_window, 0.5, "s", Range::above(0.0), "... within this time: a throw");
-    t.number("acceleration_window", &P::acceleration_window, 0.04, "s", Range::closed(0.008, 0.2),
-             "acceleration from the estimated velocities over this span");
-    return t;
-  }();
+  static const ParamTable<ThrowModeParams> table = throwModeParamsRows();
   return table;
 }
 

@@ -2,18 +2,14 @@
 
 #include <algorithm>
 
+#include "command_sender_rows.hpp"
+
 namespace sdlqr::px4 {
 
 CommandRetry::CommandRetry() { declaration().setDefaults(*this); }
 
 const ParamTable<CommandRetry>& CommandRetry::declaration() {
-  static const ParamTable<CommandRetry> table = [] {
-    ParamTable<CommandRetry> t("MAVLink commands: resent until their COMMAND_ACK or a time-out");
-    t.number("interval_s", &CommandRetry::interval_s, 0.25, "s", Range::closed(0.01, 10.0),
-             "between sends of an unanswered command");
-    t.integer("attempts", &CommandRetry::attempts, 8, "-", Range::closed(1, 100), "sends before the command times out");
-    return t;
-  }();
+  static const ParamTable<CommandRetry> table = commandRetryRows();
   return table;
 }
 

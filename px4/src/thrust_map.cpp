@@ -3,19 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
+#include "thrust_map_rows.hpp"
+
 namespace sdlqr::px4 {
 
 ThrustMap::ThrustMap() { declaration().setDefaults(*this); }
 
 const ParamTable<ThrustMap>& ThrustMap::declaration() {
-  static const ParamTable<ThrustMap> table = [] {
-    ParamTable<ThrustMap> t("sdlqr's thrust c [m/s^2] to PX4's normalized thrust (docs/px4.md: identify it from a hover)");
-    t.number("hover_throttle", &ThrustMap::hover_throttle, 0.5003, "-", Range::open(0.0, 1.0),
-             "normalized thrust that holds a hover (the emulated quad255: mass g / (4 max_rotor_thrust))");
-    t.number("curve", &ThrustMap::curve, 0.0, "-", Range::closed(0.0, 1.0),
-             "PX4's THR_MDL_FAC: relative thrust (1 - curve) T + curve T^2; 0 when PX4 linearizes");
-    return t;
-  }();
+  static const ParamTable<ThrustMap> table = thrustMapRows();
   return table;
 }
 

@@ -5,6 +5,8 @@
 
 #include "sdlqr/math/quaternion.hpp"
 
+#include "guard_rows.hpp"
+
 namespace sdlqr::trajectory {
 
 TrajectoryGuardParams::TrajectoryGuardParams() { declaration().setDefaults(*this); }
@@ -12,15 +14,7 @@ TrajectoryGuardParams::TrajectoryGuardParams() { declaration().setDefaults(*this
 const ParamTable<TrajectoryGuardParams>& TrajectoryGuardParams::declaration() {
   static const ParamTable<TrajectoryGuardParams> table = [] {
     using P = TrajectoryGuardParams;
-    ParamTable<P> t("trajectory guard: beyond these the trajectory is aborted into a recovery (level, stop) and a hold");
-    t.number("max_path_error", &P::max_path_error, 1.0, "m", Range::above(0.0), "estimate to reference distance");
-    t.number("max_speed", &P::max_speed, 6.0, "m/s", Range::above(0.0), "estimated speed");
-    t.number("max_tilt_deg", &P::max_tilt_deg, 70.0, "deg", Range::openClosed(0.0, 180.0),
-             "estimated tilt of body z from world z");
-    t.number("max_attitude_error_deg", &P::max_attitude_error_deg, 45.0, "deg", Range::openClosed(0.0, 180.0),
-             "estimated attitude to reference attitude angle");
-    t.list("fence_min", &P::fence_min, {-10.0, -10.0, -1.0}, "m", Range::finite(), "geofence box, lower corner (world)");
-    t.list("fence_max", &P::fence_max, {10.0, 10.0, 10.0}, "m", Range::finite(), "geofence box, upper corner (world)");
+    ParamTable<TrajectoryGuardParams> t = trajectoryGuardParamsRows();
     t.check("fence_max", [](const P& p) { return (p.fence_max - p.fence_min).minCoeff() > 0.0; },
             "must exceed fence_min on every axis");
     return t;

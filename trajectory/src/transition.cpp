@@ -9,6 +9,8 @@
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/trajectory/polynomial.hpp"
 
+#include "transition_rows.hpp"
+
 namespace sdlqr::trajectory {
 
 namespace {
@@ -56,26 +58,7 @@ double wrapTransitionAngle(double angle) { return std::remainder(angle, 2.0 * M_
 TransitionParams::TransitionParams() { declaration().setDefaults(*this); }
 
 const ParamTable<TransitionParams>& TransitionParams::declaration() {
-  static const ParamTable<TransitionParams> table = [] {
-    using P = TransitionParams;
-    ParamTable<P> t("entry into and exit from a trajectory within the lqr limits (trajectory/transition.hpp)");
-    t.flag("enabled", &P::enabled, true, "false: a path starts at full speed, a GOTO off a path jumps (the old steps)");
-    t.number("max_duration", &P::max_duration, 20.0, "s", Range::openClosed(0.0, 120.0), "longest transition searched");
-    t.number("min_speed_limit", &P::min_speed_limit, 1.0, "m/s", Range::above(0.0),
-             "speed bound of a transition when both its ends are slower");
-    t.number("speed_margin", &P::speed_margin, 0.2, "-", Range::closed(0.0, 2.0),
-             "a transition may exceed the faster end's speed by this fraction");
-    t.number("input_fraction", &P::input_fraction, 0.8, "-", Range::openClosed(0.0, 1.0),
-             "a transition uses at most this fraction of lqr.omega_max and c_max (the feedback keeps the rest), "
-             "unless an end it joins needs more");
-    t.number("position_tolerance", &P::position_tolerance, 0.05, "m", Range::atLeast(0.0),
-             "a vehicle this close to a path's start ...");
-    t.number("velocity_tolerance", &P::velocity_tolerance, 0.1, "m/s", Range::atLeast(0.0),
-             "... moving this close to its start velocity ...");
-    t.number("acceleration_tolerance", &P::acceleration_tolerance, 0.5, "m/s^2", Range::atLeast(0.0),
-             "... and accelerating this close to its start acceleration flies the path with no entry");
-    return t;
-  }();
+  static const ParamTable<TransitionParams> table = transitionParamsRows();
   return table;
 }
 

@@ -6,6 +6,8 @@
 #include "sdlqr/math/in_flight.hpp"
 #include "sdlqr/math/vehicle.hpp"
 
+#include "validate_rows.hpp"
+
 namespace sdlqr {
 
 namespace {
@@ -37,24 +39,7 @@ bool modeKnown(ReferenceMode mode) {
 ValidationLimits::ValidationLimits() { declaration().setDefaults(*this); }
 
 const ParamTable<ValidationLimits>& ValidationLimits::declaration() {
-  static const ParamTable<ValidationLimits> table = [] {
-    using P = ValidationLimits;
-    ParamTable<P> t("limits of the message validation in every process that receives messages");
-    t.number("quaternion_norm_tolerance", &P::quaternion_norm_tolerance, 0.05, "-", Range::open(0.0, 0.5),
-             "accept 1 - tol <= |q| <= 1 + tol");
-    t.number("max_position", &P::max_position, 1000.0, "m", Range::above(0.0), "|p| per axis");
-    t.number("max_velocity", &P::max_velocity, 50.0, "m/s", Range::above(0.0), "speed |v|");
-    t.number("max_body_rate", &P::max_body_rate, 35.0, "rad/s", Range::openClosed(0.0, 100.0),
-             "largest |omega| anywhere (estimates, references, RATE_CMD, lqr.omega_max, failsafe): "
-             "2000 deg/s, the gyro's range");
-    t.number("max_thrust", &P::max_thrust, 60.0, "m/s^2", Range::above(0.0),
-             "mass-normalized thrust of references, trajectories and a PARAMS c_max");
-    t.number("max_gain", &P::max_gain, 1e4, "-", Range::above(0.0), "|K_ij| of GAINS");
-    t.number("max_weight", &P::max_weight, 1e8, "-", Range::above(0.0), "largest Q or R entry a PARAMS update may set");
-    t.integer("max_trajectory_samples", &P::max_trajectory_samples, 100000, "-", Range::closed(2, 10000000),
-              "samples of one TRAJECTORY");
-    return t;
-  }();
+  static const ParamTable<ValidationLimits> table = validationLimitsRows();
   return table;
 }
 

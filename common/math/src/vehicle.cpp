@@ -6,6 +6,8 @@
 
 #include "sdlqr/math/model.hpp"
 
+#include "vehicle_rows.hpp"
+
 namespace sdlqr {
 
 Eigen::Matrix<double, 2, 4> VehicleParams::defaultRotorPositions(double arm_length) {
@@ -51,25 +53,7 @@ bool triangleInequality(const Vec3& j) { return j[0] + j[1] >= j[2] && j[1] + j[
 const ParamTable<VehicleParams>& VehicleParams::declaration() {
   static const ParamTable<VehicleParams> table = [] {
     using P = VehicleParams;
-    ParamTable<P> t("airframe, shared by the simulator (the plant) and the bodyrate loop (its model)");
-    t.number("mass", &P::mass, 0.255, "kg", Range::open(0.0, 100.0), "take-off weight").inFlight(ParamsUpdate::kMass);
-    t.list("inertia_diag", &P::inertia_diag, {9.0e-4, 9.0e-4, 1.6e-3}, "kg m^2", Range::above(0.0),
-           "principal moments about body x, y, z");
-    t.number("arm_length", &P::arm_length, 0.125, "m", Range::above(0.0), "centre to rotor axis: 250 mm diagonal / 2");
-    t.number("max_rotor_thrust", &P::max_rotor_thrust, 1.25, "N", Range::above(0.0),
-             "per rotor: 4 x 1.25 N = 2.0 x weight");
-    t.number("min_rotor_thrust", &P::min_rotor_thrust, 0.0, "N", Range::atLeast(0.0), "per rotor");
-    t.number("torque_coefficient", &P::torque_coefficient, 0.0125, "m", Range::above(0.0),
-             "rotor drag torque per newton of thrust");
-    t.number("motor_time_constant", &P::motor_time_constant, 0.03, "s", Range::closedOpen(0.0, 1.0),
-             "first-order lag from command to thrust");
-    t.list("rotor_drag", &P::rotor_drag, {0.30, 0.30, 0.10}, "1/s", Range::atLeast(0.0),
-           "linear rotor drag per body axis, mass-normalized");
-    t.list("yaw_sign", &P::yaw_sign, {-1, -1, 1, 1}, "-", Range::closed(-1.0, 1.0),
-           "reaction-torque sign per rotor (FR, BL CCW; FL, BR CW)");
-    t.derivedList<8>("rotor_xy", "m", Range::finite(),
-                     "rotor positions in the body frame (FR, BL, FL, BR); absent: the X layout of arm_length",
-                     "[x0, y0, x1, y1, x2, y2, x3, y3]", xLayout, flatRotors, setRotors);
+    ParamTable<VehicleParams> t = vehicleParamsRows();
     // Principal moments of a rigid body satisfy the triangle inequality.
     t.check("inertia_diag", [](const P& p) { return triangleInequality(p.inertia_diag); },
             "violates the triangle inequality of principal moments");

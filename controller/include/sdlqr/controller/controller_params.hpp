@@ -13,8 +13,9 @@ namespace sdlqr::controller {
 // What the controller does with an uploaded TRAJECTORY whose samples ask beyond the vehicle.
 enum class UploadBeyondLimits { kRefuse, kScale };
 
-// Each member is declared once (key, unit, default, range, help) in ControllerParams::declaration()
-// (controller_params.cpp); the default constructor takes the defaults from there.
+// Each member is declared once (key, unit, default, range, help) in
+// controller/params/controller_params.yaml (the rules across keys: controller_params.cpp); the
+// default constructor takes the defaults from there.
 struct ControllerParams : DeclaredParams<ControllerParams> {
   double rate_hz;
   double max_prediction_s;  // longest an estimate is carried forward to a tick (0: never)

@@ -11,8 +11,9 @@
 
 namespace sdlqr::estimator {
 
-// Each member is declared once (key, unit, default, range, help) in EstimatorParams::declaration()
-// (estimator_params.cpp); the default constructor takes the defaults from there.
+// Each member is declared once (key, unit, default, range, help) in
+// estimator/params/estimator_params.yaml (the rules across keys: estimator_params.cpp); the default
+// constructor takes the defaults from there.
 struct EstimatorParams : DeclaredParams<EstimatorParams> {
   // IMU model (continuous-time densities; per-sample std = density * sqrt(sample rate)).
   double gyro_noise_density;

@@ -8,7 +8,7 @@
 
 namespace sdlqr::gains {
 
-// Declared (key, unit, default, range, help) in GainsParams::declaration() (gains_params.cpp).
+// Declared (key, unit, default, range, help) in gains/params/gains_params.yaml.
 struct GainsParams : DeclaredParams<GainsParams> {
   double rate_hz;
   double state_timeout_s;

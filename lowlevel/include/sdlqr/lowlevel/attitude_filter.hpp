@@ -15,7 +15,7 @@
 
 namespace sdlqr::lowlevel {
 
-// Declared (key, unit, default, range, help) in AttitudeFilterParams::declaration() (attitude_filter.cpp).
+// Declared (key, unit, default, range, help) in lowlevel/params/attitude_filter.yaml.
 struct AttitudeFilterParams : DeclaredParams<AttitudeFilterParams> {
   double flight_gain;
   double ground_gain;

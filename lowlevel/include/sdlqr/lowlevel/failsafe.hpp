@@ -13,7 +13,7 @@
 
 namespace sdlqr::lowlevel {
 
-// Declared (key, unit, default, range, help) in FailsafeParams::declaration() (failsafe.cpp).
+// Declared (key, unit, default, range, help) in lowlevel/params/failsafe.yaml.
 struct FailsafeParams : DeclaredParams<FailsafeParams> {
   double descent_rate;
   double velocity_gain;

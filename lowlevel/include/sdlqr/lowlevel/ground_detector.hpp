@@ -12,7 +12,7 @@
 
 namespace sdlqr::lowlevel {
 
-// Declared (key, unit, default, range, help) in GroundDetectorParams::declaration() (ground_detector.cpp).
+// Declared (key, unit, default, range, help) in lowlevel/params/ground_detector.yaml.
 struct GroundDetectorParams : DeclaredParams<GroundDetectorParams> {
   double filter_cutoff_hz;
   double accel_tolerance;

@@ -14,7 +14,7 @@ namespace sdlqr::lowlevel {
 
 inline constexpr int64_t kNoTime = std::numeric_limits<int64_t>::min();
 
-// Declared (key, unit, default, range, help) in InputLimits::declaration() (input_checks.cpp).
+// Declared (key, unit, default, range, help) in lowlevel/params/input_checks.yaml.
 // The RATE_CMD body-rate bound is the stack's one, ValidationLimits::max_body_rate.
 struct InputLimits : DeclaredParams<InputLimits> {
   double max_command_lead;

@@ -16,7 +16,7 @@
 
 namespace sdlqr::lowlevel {
 
-// Declared (key, unit, default, range, help) in LowlevelParams::declaration() (lowlevel_params.cpp);
+// Declared (key, unit, default, range, help) in lowlevel/params/lowlevel_params.yaml;
 // each nested struct in its own file.
 struct LowlevelParams : DeclaredParams<LowlevelParams> {
   double idle_thrust;

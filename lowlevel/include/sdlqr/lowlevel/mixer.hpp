@@ -17,7 +17,7 @@
 
 namespace sdlqr::lowlevel {
 
-// Declared (key, unit, default, range, help) in MixerParams::declaration() (mixer.cpp).
+// Declared (key, unit, default, range, help) in lowlevel/params/mixer.yaml.
 struct MixerParams : DeclaredParams<MixerParams> {
   double yaw_collective_share;
 

@@ -15,7 +15,7 @@ namespace sdlqr::lowlevel {
 
 using AxisFlags = Eigen::Array<bool, 3, 1>;
 
-// Declared (key, unit, default, range, help) in RateControlParams::declaration() (rate_control.cpp).
+// Declared (key, unit, default, range, help) in lowlevel/params/rate_control.yaml.
 struct RateControlParams : DeclaredParams<RateControlParams> {
   Vec3 p;
   Vec3 i;

@@ -12,8 +12,9 @@
 
 namespace sdlqr::sim {
 
-// Each struct's members are declared once (key, unit, default, range, help) in its declaration()
-// (sim_params.cpp); the default constructors take the defaults from there.
+// Each struct's members are declared once (key, unit, default, range, help) in
+// sim/params/sim_params.yaml (the rules across keys: sim_params.cpp); the default constructors take
+// the defaults from there.
 
 // Noise of a MEMS IMU as agreed with the estimator (continuous-time densities).
 struct ImuParams {

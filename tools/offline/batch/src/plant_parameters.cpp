@@ -5,20 +5,14 @@
 #include <optional>
 #include <sstream>
 
+#include "plant_parameters_rows.hpp"
+
 namespace sdlqr::batch {
 
 ScenarioPerturbation::ScenarioPerturbation() { declaration().setDefaults(*this); }
 
 const ParamTable<ScenarioPerturbation>& ScenarioPerturbation::declaration() {
-  static const ParamTable<ScenarioPerturbation> table = [] {
-    using P = ScenarioPerturbation;
-    ParamTable<P> t("the scenario's disturbances, as a batch flies them");
-    t.number("disturbance_scale", &P::disturbance_scale, 1.0, "-", Range::atLeast(0.0),
-             "every disturbance's force and torque times this");
-    t.number("disturbance_delay", &P::disturbance_delay, 0.0, "s", Range::closed(-60.0, 60.0),
-             "every disturbance this much later (earlier when negative)");
-    return t;
-  }();
+  static const ParamTable<ScenarioPerturbation> table = scenarioPerturbationRows();
   return table;
 }
 

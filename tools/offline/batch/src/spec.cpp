@@ -19,16 +19,24 @@ struct SpecNumbers {
   int flights;
   long long seed;
   SpecNumbers() { declaration().setDefaults(*this); }
-  static const ParamTable<SpecNumbers>& declaration() {
-    static const ParamTable<SpecNumbers> table = [] {
-      ParamTable<SpecNumbers> t("batch numbers");
-      t.integer("flights", &SpecNumbers::flights, 100, "-", Range::closed(1, 10000000), "flights per controller");
-      t.integer("seed", &SpecNumbers::seed, 1, "-", Range::atLeast(0), "seed of every draw and every flight's noise");
-      return t;
-    }();
-    return table;
-  }
+  static const ParamTable<SpecNumbers>& declaration();
 };
+
+}  // namespace
+
+}  // namespace sdlqr::batch
+
+// The rows of SpecNumbers (params/spec.yaml, which names no header: the struct is this file's).
+#include "spec_rows.hpp"
+
+namespace sdlqr::batch {
+
+namespace {
+
+const ParamTable<SpecNumbers>& SpecNumbers::declaration() {
+  static const ParamTable<SpecNumbers> table = specNumbersRows();
+  return table;
+}
 
 bool isFile(const std::string& path) {
   struct stat st {};

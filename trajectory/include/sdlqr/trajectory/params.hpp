@@ -9,8 +9,8 @@
 
 namespace sdlqr::trajectory {
 
-// Each member is declared once (key, unit, default, range, help) in TrajectoryParams::declaration()
-// (params.cpp); the default constructor takes the defaults from there.
+// Each member is declared once (key, unit, default, range, help) in trajectory/params/params.yaml
+// (the rules across keys: params.cpp); the default constructor takes the defaults from there.
 struct TrajectoryParams : DeclaredParams<TrajectoryParams> {
   double sample_dt;
   double check_dt;

@@ -2,21 +2,22 @@
 // One declaration per parameter: key, unit, default, accepted range and help, bound to the member
 // of its struct. A struct's default constructor, its load() (unknown keys refused, wrong types and
 // ranges reported as one "section.key: reason" ConfigError), its invalidReason() and the commented
-// YAML of config/quad255.yaml all come from its table, so a new parameter is one line:
+// YAML of config/quad255.yaml all come from its table. The rows are data: each section's
+// declaration file <component>/params/<name>.yaml, from which sdlqr_paramgen (common/config/gen)
+// generates <name>_rows.hpp at build time; a new parameter is one entry there
+// (docs/architecture.md, "Adding a parameter"), and the .cpp keeps what is logic:
+//
+//   #include "gains_params_rows.hpp"  // generated from gains/params/gains_params.yaml
 //
 //   const ParamTable<GainsParams>& GainsParams::declaration() {
-//     static const ParamTable<GainsParams> table = [] {
-//       ParamTable<GainsParams> t("gain solver process (sdlqr-gains)");
-//       t.number("rate_hz", &GainsParams::rate_hz, 10.0, "Hz", Range::closed(0.1, 1000), "solve rate (paper: 10 Hz)");
-//       return t;
-//     }();
+//     static const ParamTable<GainsParams> table = gainsParamsRows();
 //     return table;
 //   }
 //
 // Rules that tie keys together (c_max > c_min) are explicit check()s on the table, each naming the
 // key it blames. Ranges are checked first, in declaration order, then the checks in theirs.
-// A key that a PARAMS update may change in flight says so after its declaration:
-// `.inFlight(ParamsUpdate::kLimits)` (its group); sdlqr/math/in_flight.hpp derives the rest.
+// A key that a PARAMS update may change in flight says so in its row (`in_flight: kLimits`, its
+// group), which becomes `.inFlight(ParamsUpdate::kLimits)`; sdlqr/math/in_flight.hpp derives the rest.
 
 #include <array>
 #include <cstdint>

@@ -15,7 +15,7 @@ namespace sdlqr {
 
 // Limits a validator cannot know from the message alone: the `validation:` section of the vehicle
 // file, read by every process that validates messages. Declared (key, unit, default, range, help)
-// in ValidationLimits::declaration() (validate.cpp). max_body_rate is the one body-rate limit of
+// in common/health/params/validate.yaml. max_body_rate is the one body-rate limit of
 // the stack: estimates, references, trajectories, RATE_CMD in the bodyrate loop, a PARAMS
 // omega_max and the failsafe's levelling rate are all held to it.
 struct ValidationLimits : DeclaredParams<ValidationLimits> {

@@ -33,7 +33,7 @@ class Watchdog {
   int64_t timeouts_ = 0;
 };
 
-// Declared (key, unit, default, range, help) in FaultParams::declaration() (watchdog.cpp).
+// Declared (key, unit, default, range, help) in common/health/params/watchdog.yaml.
 struct FaultParams : DeclaredParams<FaultParams> {
   double controller_state_timeout_s;
   double lowlevel_imu_timeout_s;

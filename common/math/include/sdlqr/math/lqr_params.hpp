@@ -27,8 +27,8 @@ const std::vector<ControlLaw>& controlLaws();
 bool isControlLaw(ControlLaw law);
 
 // Each member is declared once (key, unit, default, range, help, whether PARAMS changes it in
-// flight) in LqrParams::declaration() (lqr_params.cpp); the default constructor takes the
-// defaults from there.
+// flight) in common/math/params/lqr_params.yaml (rules and the rows built in code: lqr_params.cpp);
+// the default constructor takes the defaults from there.
 struct LqrParams : DeclaredParams<LqrParams> {
   State q_diag;
   Input r_diag;

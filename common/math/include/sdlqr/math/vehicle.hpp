@@ -14,8 +14,8 @@ namespace sdlqr {
 using Mat34 = Eigen::Matrix<double, 3, 4>;
 using Mat44 = Eigen::Matrix<double, 4, 4>;
 
-// Each member is declared once (key, unit, default, range, help) in VehicleParams::declaration()
-// (vehicle.cpp); the default constructor takes the defaults from there.
+// Each member is declared once (key, unit, default, range, help) in common/math/params/vehicle.yaml
+// (the rules across keys: vehicle.cpp); the default constructor takes the defaults from there.
 struct VehicleParams : DeclaredParams<VehicleParams> {
   double mass;
   Vec3 inertia_diag;  // principal moments, body axes
