@@ -4,22 +4,18 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "sdlqr/lcmgen/emit.hpp"
 #include "sdlqr/lcmgen/generated_file.hpp"
+#include "sdlqr/lcmgen/generator_main.hpp"
 
 using sdlqr::lcmgen::readFile;
 using sdlqr::lcmgen::writeIfChanged;
 
 int main(int argc, char** argv) {
-  // CLI11 directly (Debian libcli11-dev): the generator is built before the libraries whose
-  // ArgParser every other executable uses.
   std::string out_dir;
   std::vector<std::string> files;
   CLI::App app("Writes OUT_DIR/<package>/lcmtypes/generated/{plain,plain_fields,descriptors,lcm_fields,\n"
@@ -29,15 +25,7 @@ int main(int argc, char** argv) {
                "sdlqr_lcmtypes_gen");
   app.add_option("OUT_DIR", out_dir, "folder of the generated headers")->required();
   app.add_option("FILE.lcm", files, "the package's definitions")->required();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "sdlqr_lcmtypes_gen: " << e.what() << " (see --help)\n";
-    return 2;
-  }
-  try {
+  return sdlqr::lcmgen::runGenerator(app, argc, argv, [&] {
     const std::filesystem::path out_root = out_dir;
     std::sort(files.begin(), files.end());
     std::vector<sdlqr::lcmgen::LcmStruct> types;
@@ -50,9 +38,5 @@ int main(int argc, char** argv) {
       std::filesystem::create_directories(path.parent_path());
       writeIfChanged(path, header.text);
     }
-  } catch (const std::exception& e) {
-    std::cerr << "sdlqr_lcmtypes_gen: " << e.what() << "\n";
-    return 2;
-  }
-  return 0;
+  });
 }

@@ -140,13 +140,13 @@ TEST(ParamGen, EmitsOneCallPerRowInOrder) {
 }
 
 TEST(ParamGen, RangeSyntaxMapsOntoTheRangeFactories) {
-  EXPECT_EQ(parseRange("finite").cpp(), "Range::finite()");
-  EXPECT_EQ(parseRange("> 0.0").cpp(), "Range::above(0.0)");
-  EXPECT_EQ(parseRange(">= 0").cpp(), "Range::atLeast(0)");
-  EXPECT_EQ(parseRange("[1, 255]").cpp(), "Range::closed(1, 255)");
-  EXPECT_EQ(parseRange("(0, 1)").cpp(), "Range::open(0, 1)");
-  EXPECT_EQ(parseRange("(0.0, 5.0]").cpp(), "Range::openClosed(0.0, 5.0)");
-  EXPECT_EQ(parseRange("[0.0, 1.0)").cpp(), "Range::closedOpen(0.0, 1.0)");
+  const std::pair<const char*, const char*> written_and_cpp[] = {
+      {"finite", "Range::finite()"},           {"> 0.0", "Range::above(0.0)"},
+      {">= 0", "Range::atLeast(0)"},           {"[1, 255]", "Range::closed(1, 255)"},
+      {"(0, 1)", "Range::open(0, 1)"},         {"(0.0, 5.0]", "Range::openClosed(0.0, 5.0)"},
+      {"[0.0, 1.0)", "Range::closedOpen(0.0, 1.0)"},
+  };
+  for (const auto& [written, cpp] : written_and_cpp) EXPECT_EQ(parseRange(written).cpp(), cpp) << written;
   EXPECT_TRUE(parseRange("(0, 5]").contains(5.0));
   EXPECT_FALSE(parseRange("(0, 5]").contains(0.0));
 }
