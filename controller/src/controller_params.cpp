@@ -19,7 +19,7 @@ ControllerParams::ControllerParams() { declaration().setDefaults(*this); }
 const ParamTable<ControllerParams>& ControllerParams::declaration() {
   static const ParamTable<ControllerParams> table = [] {
     using P = ControllerParams;
-    ParamTable<ControllerParams> t = controllerParamsRows();
+    ParamTable<P> t = controllerParamsRows();
     t.check("gains_fallback_s", [](const P& p) { return p.gains_fallback_s > p.gains_stale_s; }, "must be > gains_stale_s");
     return t;
   }();

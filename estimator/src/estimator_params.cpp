@@ -20,7 +20,7 @@ EstimatorParams::EstimatorParams() { declaration().setDefaults(*this); }
 const ParamTable<EstimatorParams>& EstimatorParams::declaration() {
   static const ParamTable<EstimatorParams> table = [] {
     using P = EstimatorParams;
-    ParamTable<EstimatorParams> t = estimatorParamsRows();
+    ParamTable<P> t = estimatorParamsRows();
     // Above accel_range a reading is rejected, so a higher clip level could never be seen.
     t.check("accel_clip_level", [](const P& p) { return p.accel_clip_level <= p.accel_range; }, "must be <= accel_range");
     t.check("output_rate",

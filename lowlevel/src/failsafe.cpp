@@ -16,7 +16,7 @@ FailsafeParams::FailsafeParams() { declaration().setDefaults(*this); }
 const ParamTable<FailsafeParams>& FailsafeParams::declaration() {
   static const ParamTable<FailsafeParams> table = [] {
     using P = FailsafeParams;
-    ParamTable<FailsafeParams> t = failsafeParamsRows();
+    ParamTable<P> t = failsafeParamsRows();
     t.check("impact_rest_time", [](const P& p) { return p.impact_rest_time <= p.touchdown_time; },
             "must be <= touchdown_time");
     return t;

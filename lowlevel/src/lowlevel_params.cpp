@@ -9,7 +9,7 @@ LowlevelParams::LowlevelParams() { declaration().setDefaults(*this); }
 const ParamTable<LowlevelParams>& LowlevelParams::declaration() {
   static const ParamTable<LowlevelParams> table = [] {
     using P = LowlevelParams;
-    ParamTable<LowlevelParams> t = lowlevelParamsRows();
+    ParamTable<P> t = lowlevelParamsRows();
     t.check("dt_min", [](const P& p) { return p.dt_min < p.dt_max; }, "must be < dt_max");
     return t;
   }();

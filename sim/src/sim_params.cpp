@@ -21,7 +21,7 @@ const ParamTable<ImuParams>& ImuParams::declaration() {
 const ParamTable<VioParams>& VioParams::declaration() {
   static const ParamTable<VioParams> table = [] {
     using P = VioParams;
-    ParamTable<VioParams> t = vioParamsRows();
+    ParamTable<P> t = vioParamsRows();
     t.check("latency_max_s", [](const P& v) { return v.latency_max_s >= v.latency_min_s; }, "must be >= latency_min_s");
     // A real VIO publishes in capture order; a latency spread below one period keeps that true.
     t.check("latency_max_s", [](const P& v) { return v.latency_max_s - v.latency_min_s < 1.0 / v.rate_hz; },
@@ -51,7 +51,7 @@ const ParamTable<DisturbanceLimits>& DisturbanceLimits::declaration() {
 const ParamTable<SimParams>& SimParams::declaration() {
   static const ParamTable<SimParams> table = [] {
     using P = SimParams;
-    ParamTable<SimParams> t = simParamsRows();
+    ParamTable<P> t = simParamsRows();
     t.check("physics_rate_hz", [](const P& p) { return 1000000 % p.physics_rate_hz == 0; },
             "must give a whole-microsecond period");
     t.check("truth_rate_hz", [](const P& p) { return p.physics_rate_hz % p.truth_rate_hz == 0; },

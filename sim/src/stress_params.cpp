@@ -34,7 +34,7 @@ const ParamTable<WindParams>& WindParams::declaration() {
 const ParamTable<AirborneStart>& AirborneStart::declaration() {
   static const ParamTable<AirborneStart> table = [] {
     using P = AirborneStart;
-    ParamTable<AirborneStart> t = airborneStartRows();
+    ParamTable<P> t = airborneStartRows();
     t.check("position", [](const P& p) { return p.position.z() >= 0.0; }, "z must be >= 0 (the ground is z = 0)");
     return t;
   }();
@@ -44,7 +44,7 @@ const ParamTable<AirborneStart>& AirborneStart::declaration() {
 const ParamTable<ThrowEvent>& ThrowEvent::declaration() {
   static const ParamTable<ThrowEvent> table = [] {
     using P = ThrowEvent;
-    ParamTable<ThrowEvent> t = throwEventRows();
+    ParamTable<P> t = throwEventRows();
     t.check("hold_position", [](const P& p) { return p.hold_position.z() > 0.0; }, "z must be > 0 (held in the air)");
     t.check("duration", [](const P& p) { return p.duration > 0.0 || p.velocity.squaredNorm() == 0.0; },
             "a throw with a velocity needs a push longer than 0 s");
@@ -61,7 +61,7 @@ const ParamTable<PayloadDrop>& PayloadDrop::declaration() {
 const ParamTable<SimStress>& SimStress::declaration() {
   static const ParamTable<SimStress> table = [] {
     using P = SimStress;
-    ParamTable<SimStress> t = simStressRows();
+    ParamTable<P> t = simStressRows();
     t.check("throw", [](const P& p) { return !(p.throw_event.enabled() && p.airborne_start.enabled()); },
             "choose a throw or an airborne start, not both");
     return t;

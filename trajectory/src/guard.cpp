@@ -14,7 +14,7 @@ TrajectoryGuardParams::TrajectoryGuardParams() { declaration().setDefaults(*this
 const ParamTable<TrajectoryGuardParams>& TrajectoryGuardParams::declaration() {
   static const ParamTable<TrajectoryGuardParams> table = [] {
     using P = TrajectoryGuardParams;
-    ParamTable<TrajectoryGuardParams> t = trajectoryGuardParamsRows();
+    ParamTable<P> t = trajectoryGuardParamsRows();
     t.check("fence_max", [](const P& p) { return (p.fence_max - p.fence_min).minCoeff() > 0.0; },
             "must exceed fence_min on every axis");
     return t;

@@ -9,7 +9,7 @@ TrajectoryParams::TrajectoryParams() { declaration().setDefaults(*this); }
 const ParamTable<TrajectoryParams>& TrajectoryParams::declaration() {
   static const ParamTable<TrajectoryParams> table = [] {
     using P = TrajectoryParams;
-    ParamTable<TrajectoryParams> t = trajectoryParamsRows();
+    ParamTable<P> t = trajectoryParamsRows();
     t.check("check_dt", [](const P& p) { return p.check_dt <= p.sample_dt; }, "must be <= sample_dt");
     return t;
   }();

@@ -40,6 +40,7 @@ std::string VehicleParams::massInvalidReason(double candidate_mass, double gravi
 
 namespace {
 
+// rotor_xy's derive, get and set (its row in params/vehicle.yaml names them).
 using FlatRotors = Eigen::Matrix<double, 8, 1>;  // x0, y0, x1, y1, ...
 
 FlatRotors flatRotors(const VehicleParams& p) { return Eigen::Map<const FlatRotors>(p.rotor_xy.data()); }
@@ -53,7 +54,7 @@ bool triangleInequality(const Vec3& j) { return j[0] + j[1] >= j[2] && j[1] + j[
 const ParamTable<VehicleParams>& VehicleParams::declaration() {
   static const ParamTable<VehicleParams> table = [] {
     using P = VehicleParams;
-    ParamTable<VehicleParams> t = vehicleParamsRows();
+    ParamTable<P> t = vehicleParamsRows();
     // Principal moments of a rigid body satisfy the triangle inequality.
     t.check("inertia_diag", [](const P& p) { return triangleInequality(p.inertia_diag); },
             "violates the triangle inequality of principal moments");
