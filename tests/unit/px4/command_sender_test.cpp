@@ -30,10 +30,15 @@ mavlink::CommandAck ackOf(uint16_t id, uint8_t result) {
   return a;
 }
 
-TEST(CommandSender, ResendsWithRisingConfirmationThenTimesOut) {
+// A sender with the default retry and the link it writes to, which keeps what was sent.
+class CommandSenderTest : public ::testing::Test {
+ protected:
   Kept kept;
-  mavlink::MessageSinkTo<Kept&> link(kept);
-  CommandSender sender(CommandRetry{});
+  mavlink::MessageSinkTo<Kept&> link{kept};
+  CommandSender sender{CommandRetry{}};
+};
+
+TEST_F(CommandSenderTest, ResendsWithRisingConfirmationThenTimesOut) {
   sender.send(commandOf(176), 0.0, link);
   std::optional<CommandResult> result;
   for (int i = 1; i <= 300 && !result; ++i) result = sender.onTime(0.01 * i, link);
@@ -46,10 +51,7 @@ TEST(CommandSender, ResendsWithRisingConfirmationThenTimesOut) {
   EXPECT_TRUE(sender.idle());
 }
 
-TEST(CommandSender, AnAckFinishesItAndTheNextQueuedGoesOut) {
-  Kept kept;
-  mavlink::MessageSinkTo<Kept&> link(kept);
-  CommandSender sender(CommandRetry{});
+TEST_F(CommandSenderTest, AnAckFinishesItAndTheNextQueuedGoesOut) {
   sender.send(commandOf(511), 0.0, link);
   sender.send(commandOf(176), 0.0, link);
   EXPECT_EQ(kept.commands.size(), 1u);
@@ -65,10 +67,7 @@ TEST(CommandSender, AnAckFinishesItAndTheNextQueuedGoesOut) {
   EXPECT_TRUE(sender.idle());
 }
 
-TEST(CommandSender, InProgressWaitsWithoutResending) {
-  Kept kept;
-  mavlink::MessageSinkTo<Kept&> link(kept);
-  CommandSender sender(CommandRetry{});
+TEST_F(CommandSenderTest, InProgressWaitsWithoutResending) {
   sender.send(commandOf(400), 0.0, link);
   EXPECT_FALSE(sender.onAck(ackOf(400, mavlink::mav_result::kInProgress), 0.05, link));
   for (int i = 1; i < 300; ++i) EXPECT_FALSE(sender.onTime(0.01 * i, link));
