@@ -3,7 +3,8 @@
 # (a `sort | head` there died of SIGPIPE on CI, exit 141, after the tests had passed) and
 # lists the COUNT slowest, slowest first. Its closing count says how many tests passed, failed and
 # were skipped, and names each skipped test with its missing prerequisite; with CI=true a skip
-# fails the suite. compare --bus and batch exit 1 when a flight failed a check, naming it.
+# fails the suite. compare --bus and batch exit 1 when a flight failed a check, naming it. The flights
+# at a time follow the bus's measured cost.
 #   sdlqr_script_test.sh SOURCE_DIR
 set -euo pipefail
 source "$1/sdlqr"
@@ -94,4 +95,13 @@ batch_failures "$out/batch" 2>"$out/stderr.txt" || status=$?
 [ "$status" = 1 ] && grep -q "1 of 2 flights failed a check" "$out/stderr.txt" && grep -q "flight 1 (sdlqr, seed 2)" "$out/stderr.txt" ||
   { echo "FAIL: a batch with a failed flight exits $status:"; cat "$out/stderr.txt"; exit 1; }
 echo "ok   (negative) a batch with a failed flight exits 1 naming it"
+
+# Flights at a time from the ping/pong's CPU share: three per core where the bus is cheap (the Xeon
+# VM's 3.3 %), two where it costs as much as on the EPYC VM (8 %) or was not measured (0).
+for case in "2 3.3 6" "2 4.5 5" "2 8.0 4" "2 0 4" "4 1.0 12" "1 2.0 3"; do
+  read -r cores percent want <<<"$case"
+  got=$(flight_jobs_for "$cores" "$percent")
+  [ "$got" = "$want" ] || { echo "FAIL: flight_jobs_for $cores cores, ping/pong $percent %: $got, expected $want"; exit 1; }
+done
+echo "ok   flights at a time: 6 on 2 cores at 3.3 %, 4 at 8 % or unmeasured, at most three per core"
 echo PASS
