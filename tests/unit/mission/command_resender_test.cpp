@@ -16,31 +16,48 @@ Command sentAt(int64_t utime, int64_t seq, CommandType type, double z = 1.0) {
   return c;
 }
 
-TEST(CommandResender, ReSendsTheLastTakeoffOncePerIntervalWithItsSeqAndAFreshUtime) {
+TEST(CommandResender, ReSendsTheLastTakeoffATenthOfTheIntervalLaterThenOncePerIntervalWithItsSeqAndAFreshUtime) {
   CommandResender resender(1'000'000);
   EXPECT_EQ(resender.due(5'000'000), nullptr) << "nothing sent yet";
   resender.sent(sentAt(1'000'000, 1, CommandType::kTakeoff, 1.5));
-  EXPECT_EQ(resender.due(1'999'999), nullptr);
-  const Command* resend = resender.due(2'000'000);
+  EXPECT_EQ(resender.due(1'099'999), nullptr);
+  const Command* resend = resender.due(1'100'000);
   ASSERT_NE(resend, nullptr);
   EXPECT_EQ(resend->seq, 1);
-  EXPECT_EQ(resend->utime, 2'000'000);
+  EXPECT_EQ(resend->utime, 1'100'000);
   EXPECT_EQ(resend->command, CommandType::kTakeoff);
   EXPECT_EQ(resend->position[2], 1.5);
-  EXPECT_EQ(resender.due(2'500'000), nullptr);
+  EXPECT_EQ(resender.due(2'099'999), nullptr) << "then a whole interval";
+  ASSERT_NE(resender.due(2'100'000), nullptr);
   // Ticks of the mission loop are late, not on the grid: the interval runs from the last re-send.
-  ASSERT_NE(resender.due(3'020'000), nullptr);
-  EXPECT_EQ(resender.due(4'000'000), nullptr);
-  ASSERT_NE(resender.due(4'020'000), nullptr);
-  EXPECT_EQ(resender.resends(), 3);
+  ASSERT_NE(resender.due(3'120'000), nullptr);
+  EXPECT_EQ(resender.due(4'100'000), nullptr);
+  ASSERT_NE(resender.due(4'120'000), nullptr);
+  EXPECT_EQ(resender.resends(), 4);
+}
+
+TEST(CommandResender, AnArmReplacedHalfAnIntervalLaterIsReSentBeforeIt) {
+  // hover_jumps: ARM at 0.5 s, TAKEOFF at 1.0 s. Re-sent only once per interval, the ARM was sent
+  // once, and its datagram lost under loss left the log without the scenario's arm.
+  CommandResender resender(1'000'000);
+  resender.sent(sentAt(500'000, 1, CommandType::kArm));
+  EXPECT_EQ(resender.due(590'000), nullptr);
+  const Command* resend = resender.due(600'000);
+  ASSERT_NE(resend, nullptr);
+  EXPECT_EQ(resend->seq, 1);
+  EXPECT_EQ(resend->command, CommandType::kArm);
+  resender.sent(sentAt(1'000'000, 2, CommandType::kTakeoff));
+  resend = resender.due(1'100'000);
+  ASSERT_NE(resend, nullptr) << "the TAKEOFF's own early re-send";
+  EXPECT_EQ(resend->seq, 2);
 }
 
 TEST(CommandResender, AGotoReplacesTheTakeoff) {
   CommandResender resender(1'000'000);
   resender.sent(sentAt(1'000'000, 1, CommandType::kTakeoff));
-  resender.sent(sentAt(1'400'000, 2, CommandType::kGoto, 2.0));
-  EXPECT_EQ(resender.due(2'000'000), nullptr) << "interval counts from the GOTO";
-  const Command* resend = resender.due(2'400'000);
+  resender.sent(sentAt(1'040'000, 2, CommandType::kGoto, 2.0));
+  EXPECT_EQ(resender.due(1'100'000), nullptr) << "the wait counts from the GOTO";
+  const Command* resend = resender.due(1'140'000);
   ASSERT_NE(resend, nullptr);
   EXPECT_EQ(resend->seq, 2);
   EXPECT_EQ(resend->command, CommandType::kGoto);
@@ -54,13 +71,13 @@ TEST(CommandResender, EveryCommandTypeIsReSentUntilTheNextCommand) {
     CommandResender resender(1'000'000);
     resender.sent(sentAt(1'000'000, 1, CommandType::kTakeoff));
     resender.sent(sentAt(1'500'000, 2, type));
-    EXPECT_EQ(resender.due(2'000'000), nullptr) << "interval counts from the new command";
-    const Command* resend = resender.due(2'500'000);
+    EXPECT_EQ(resender.due(1'599'999), nullptr) << "the wait counts from the new command";
+    const Command* resend = resender.due(1'600'000);
     ASSERT_NE(resend, nullptr) << "command type " << static_cast<int>(type);
     EXPECT_EQ(resend->seq, 2);
     EXPECT_EQ(resend->command, type);
     resender.sent(sentAt(2'700'000, 3, CommandType::kGoto, 2.0));
-    resend = resender.due(3'700'000);
+    resend = resender.due(2'800'000);
     ASSERT_NE(resend, nullptr);
     EXPECT_EQ(resend->seq, 3) << "the next command replaces it";
   }

@@ -31,7 +31,8 @@
 namespace sdlqr::mission {
 
 struct MissionOptions {
-  double resend_interval_s = 1.0;   // [s] of simulation time between re-sends of the current command (0: never)
+  double resend_interval_s = 1.0;   // [s] of simulation time between re-sends of the current command, the first
+                                    // a tenth of it after the command (0: never)
   double no_clock_timeout_s = 10.0; // [s] of wall time without a newer clock: clockLost()
 };
 
