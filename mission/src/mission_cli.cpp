@@ -10,8 +10,8 @@ void addMissionOptions(ArgParser& parser, MissionOptions* options, bool* describ
   parser.addOption("--no-clock-timeout", &options->no_clock_timeout_s, "S",
                    "give up (exit 1) when no SIM_CLOCK arrives for this many wall seconds (default 10)");
   parser.addOption("--resend-interval", &options->resend_interval_s, "S",
-                   "re-send the current command S/10 s of simulation time after it is sent, then every S s,\n"
-                   "for a restarted process and a lost datagram (default 1, 0: never)");
+                   "re-send the current command and pull S/10 s of simulation time after they are sent, then\n"
+                   "every S s, for a restarted process and a lost datagram (default 1, 0: never)");
   parser.addFlag("--describe", describe_only,
                  "validate the scenario, print name, vehicle, seed, rate and duration as key=value lines, exit");
   parser.allowPositional(positional, "SCENARIO.yaml");

@@ -52,6 +52,7 @@ MissionCore::MissionCore(const Scenario& scenario, const trajectory::TrajectoryP
       trajectories_(buildTrajectories(scenario, trajectory, limits)),
       player_(scenario),
       resender_(static_cast<int64_t>(options.resend_interval_s * 1e6)),
+      disturbance_resender_(static_cast<int64_t>(options.resend_interval_s * 1e6)),
       throws_detected_(health_.counters().add("throw.detected")) {
   if (scenario.throw_mode.enabled()) {
     throw_detector_.emplace(scenario.throw_mode, limits.lqr.gravity);
@@ -97,6 +98,7 @@ void MissionCore::onClock(const SimClockTick& clock, Outbox& out) {
     play(*event, out);
   }
   if (const Command* resend = resender_.due(utime)) out.publish(*resend);
+  if (const Disturbance* resend = disturbance_resender_.due(utime)) out.publish(*resend);
 }
 
 void MissionCore::play(const ScenarioEvent& event, Outbox& out) {
@@ -110,6 +112,7 @@ void MissionCore::play(const ScenarioEvent& event, Outbox& out) {
       disturbance.start_utime = now_utime_;
       disturbance.seq = disturbance_seq_++;
       out.publish(disturbance);
+      disturbance_resender_.sent(disturbance);
       break;
     }
     case ScenarioEvent::Kind::kParams: {

@@ -29,8 +29,12 @@ RejectReason SimCore::onDisturbance(const Disturbance& disturbance) {
   if (reason == RejectReason::kNone) {
     reason = disturbance_order_.offer(disturbance.utime, disturbance.seq, simulator_.utime());
   }
-  if (reason == RejectReason::kNone) reason = simulator_.addDisturbance(disturbance);
   if (health_.reject(Stream::kDisturbance, reason)) return reason;
+  // A re-send of the pull already applied (sdlqr-mission: same seq, fresh utime) applies nothing.
+  if (disturbance.seq == last_disturbance_seq_) return RejectReason::kNone;
+  reason = simulator_.addDisturbance(disturbance);
+  if (health_.reject(Stream::kDisturbance, reason)) return reason;
+  last_disturbance_seq_ = disturbance.seq;
   health_.counters().increment(disturbances_accepted_);
   return RejectReason::kNone;
 }

@@ -21,7 +21,7 @@
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/messages/outbox.hpp"
 #include "sdlqr/messages/ports.hpp"
-#include "sdlqr/mission/command_resender.hpp"
+#include "sdlqr/mission/resender.hpp"
 #include "sdlqr/mission/mission_player.hpp"
 #include "sdlqr/mission/scenario.hpp"
 #include "sdlqr/mission/throw_detector.hpp"
@@ -31,8 +31,8 @@
 namespace sdlqr::mission {
 
 struct MissionOptions {
-  double resend_interval_s = 1.0;   // [s] of simulation time between re-sends of the current command, the first
-                                    // a tenth of it after the command (0: never)
+  double resend_interval_s = 1.0;   // [s] of simulation time between re-sends of the current command and pull,
+                                    // the first a tenth of it after the message (0: never)
   double no_clock_timeout_s = 10.0; // [s] of wall time without a newer clock: clockLost()
 };
 
@@ -81,6 +81,7 @@ class MissionCore {
   std::vector<Trajectory> trajectories_;  // by event index
   MissionPlayer player_;
   CommandResender resender_;
+  DisturbanceResender disturbance_resender_;
   ProcessHealth health_;
   EventObserver observer_ = nullptr;
   ThrowObserver throw_observer_ = nullptr;

@@ -57,6 +57,7 @@ class SimCore {
   ProcessHealth health_;
   TimeGate motor_time_{0};
   OrderGate disturbance_order_;
+  int64_t last_disturbance_seq_ = -1;  // the mission re-sends its current pull with the same seq
   bool crash_reported_ = false;
   SimClockTick clock_;  // SIM_CLOCK, published at every clock_.period_us of simulation time
   Counters::Id disturbances_accepted_, crashes_;

@@ -210,7 +210,8 @@ void measurePulls(const logger::FlightLog& log, const PathDistances& path_distan
   std::vector<const Disturbance*> pulls;
   for (const Disturbance& d : log.disturbance.messages) {
     const double t = seconds(d.start_utime > 0 ? d.start_utime : d.utime);
-    if (t >= r.start && t < r.end) pulls.push_back(&d);
+    const bool resent = !pulls.empty() && pulls.back()->seq == d.seq;  // sdlqr-mission's re-send: the same pull
+    if (t >= r.start && t < r.end && !resent) pulls.push_back(&d);
   }
   for (size_t i = 0; i < pulls.size(); ++i) {
     const double until = i + 1 < pulls.size() ? seconds(pulls[i + 1]->start_utime) : r.end;

@@ -21,12 +21,13 @@ using ::sdlqr::test::kSourceDir;
 
 using Flight = test::AnalyzedFlight;
 
-// `edit` changes the vehicle file's parameters before the flight.
-Flight fly(const std::string& name, void (*edit)(closedloop::StackConfig&) = nullptr) {
+// `edit` changes the vehicle file's parameters before the flight; `resend_s`: the mission's re-send
+// interval (sdlqr-mission's default 1 s; the in-process loop's 0, none).
+Flight fly(const std::string& name, void (*edit)(closedloop::StackConfig&) = nullptr, double resend_s = 0.0) {
   const mission::Scenario scenario = mission::Scenario::load(kSourceDir + "/config/scenarios/" + name + ".yaml");
   closedloop::StackConfig config = closedloop::StackConfig::load(scenario.vehicle_path);
   if (edit != nullptr) edit(config);
-  closedloop::ClosedLoop loop(config, scenario, test::motorCommandsRecorded());
+  closedloop::ClosedLoop loop(config, scenario, test::motorCommandsRecorded(), resend_s);
   loop.run();
   Flight flight;
   flight.log = loop.log();
@@ -91,6 +92,21 @@ TEST(Experiments, PulledSpatialSkipsNothingAndTemporalSkipsSamples) {
 
 // The saturation criteria measure where saturation happens: a controller whose thrust law runs
 // into its limits fails them, although every command it sends lies within those limits.
+TEST(Experiments, APullReSentByTheMissionIsOnePull) {
+  // sdlqr-mission re-sends its pull (same seq, same start) so that one lost datagram does not lose
+  // it: the log holds it several times, the simulator and the analysis count it once.
+  const Flight resent = fly("minsnap_pulled", nullptr, 1.0);
+  const Flight once = fly("minsnap_pulled");
+  ASSERT_GE(resent.log.disturbance.size(), 2u);
+  EXPECT_EQ(resent.log.disturbance[0].seq, resent.log.disturbance[1].seq);
+  test::expectEveryCheckPasses(resent.report, resent.report.scenario);
+  ASSERT_EQ(resent.report.trajectories.size(), 1u);
+  ASSERT_EQ(resent.report.trajectories[0].pulls.size(), 1u);
+  EXPECT_EQ(resent.report.trajectories[0].pulls[0].distance_at_release,
+            once.report.trajectories[0].pulls[0].distance_at_release)
+      << "the same flight: a re-sent pull applies nothing";
+}
+
 TEST(Experiments, AControllerThatSaturatesFailsTheSaturationCriteria) {
   const Flight nominal = fly("hover_jumps");
   const analysis::Check* demand = findCheck(nominal.report, "thrust_demand_outside_max");

@@ -1,8 +1,9 @@
-// The mission's re-send of its current setpoint command (for a controller restarted mid-flight).
+// The mission's re-send of its current setpoint command (for a controller restarted mid-flight, and
+// a lost datagram) and of its current pull.
 
 #include <gtest/gtest.h>
 
-#include "sdlqr/mission/command_resender.hpp"
+#include "sdlqr/mission/resender.hpp"
 
 namespace sdlqr::mission {
 namespace {
@@ -87,6 +88,24 @@ TEST(CommandResender, ZeroIntervalNeverReSends) {
   CommandResender resender(0);
   resender.sent(sentAt(1'000'000, 1, CommandType::kTakeoff));
   for (int64_t t = 1'000'000; t < 10'000'000; t += 10'000) ASSERT_EQ(resender.due(t), nullptr);
+}
+
+TEST(DisturbanceResender, ReSendsThePullWithItsSeqAndStartAndAFreshUtime) {
+  // A pull sent once and lost under loss never happened: the simulator applies a seq once.
+  DisturbanceResender resender(1'000'000);
+  Disturbance pull;
+  pull.seq = 4;
+  pull.utime = 39'000'000;
+  pull.start_utime = 39'000'000;
+  pull.duration = 2.0;
+  resender.sent(pull);
+  EXPECT_EQ(resender.due(39'099'999), nullptr);
+  const Disturbance* resend = resender.due(39'100'000);
+  ASSERT_NE(resend, nullptr);
+  EXPECT_EQ(resend->seq, 4);
+  EXPECT_EQ(resend->utime, 39'100'000);
+  EXPECT_EQ(resend->start_utime, 39'000'000) << "the same pull, not a later one";
+  EXPECT_EQ(resend->duration, 2.0);
 }
 
 }  // namespace
