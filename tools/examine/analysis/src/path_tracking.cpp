@@ -208,9 +208,11 @@ PathPull measurePull(const Disturbance& d, double until, const PathDistances& pa
 void measurePulls(const logger::FlightLog& log, const PathDistances& path_distance, double return_error,
                   PathTrackingReport& r) {
   std::vector<const Disturbance*> pulls;
+  int64_t last_seq = -1;
   for (const Disturbance& d : log.disturbance.messages) {
     const double t = seconds(d.start_utime > 0 ? d.start_utime : d.utime);
-    const bool resent = !pulls.empty() && pulls.back()->seq == d.seq;  // sdlqr-mission's re-send: the same pull
+    const bool resent = d.seq == last_seq;  // sdlqr-mission's re-send: the same pull, wherever its first copy fell
+    last_seq = d.seq;
     if (t >= r.start && t < r.end && !resent) pulls.push_back(&d);
   }
   for (size_t i = 0; i < pulls.size(); ++i) {
