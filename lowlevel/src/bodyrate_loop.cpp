@@ -212,9 +212,13 @@ MotorCommand BodyrateLoop::step(const ImuSample& sample) {
 
 void BodyrateLoop::flyRate(const Vec3& rate, double dt) {
   const double thrust = command_.thrust;
-  // The accelerometer cannot tell hover from rest; a command below hover can.
-  status_.maybe_landed = ground_detector_.atRest() &&
-                         thrust < params_.ground_detector.landed_thrust_ratio * status_.hover_thrust;
+  // The accelerometer cannot tell hover from rest; a command below hover can, when the IMU reads
+  // more than the command gives: something else carries the weight. The second test keeps a
+  // learned hover thrust left high (a hard climb, a fast turn) from making a hover "below hover":
+  // frozen while landed, it disarmed the vehicle in the air.
+  const GroundDetectorParams& ground = params_.ground_detector;
+  status_.maybe_landed = ground_detector_.atRest() && thrust < ground.landed_thrust_ratio * status_.hover_thrust &&
+                         ground_detector_.filteredBodyZ() - thrust > ground.support_margin;
   status_.landed_time = status_.maybe_landed ? status_.landed_time + dt : 0.0;
   if (status_.landed_time >= params_.ground_detector.landed_time) {
     ++counters_.auto_disarms;

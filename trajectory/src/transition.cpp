@@ -163,14 +163,15 @@ FeasibilityReport checkFeasibility(const Transition& transition, const Feasibili
 
 namespace {
 
-// The thrust and body-rate norm a flat state asks for (flatness.hpp, heading held).
-Input inputsAt(const FlatState& s, double gravity) {
+// The thrust and body rates a flat state asks for against the model's rotor drag (flatness.hpp,
+// heading held).
+Input inputsAt(const FlatState& s, double gravity, const RotorDrag& drag) {
   FlatOutput f;
   f.velocity = s.velocity;
   f.acceleration = s.acceleration;
   f.jerk = s.jerk;
   f.yaw = s.yaw;
-  return flatToReference(f, gravity).u;
+  return flatToReference(f, gravity, drag).u;
 }
 
 // The lqr limits, of which a transition uses only `input_fraction` of omega_max and c_max unless an
@@ -179,11 +180,8 @@ FeasibilityLimits transitionLimits(const FlatState& from, const FlatState& to, c
                                    const TransitionParams& params) {
   const double faster = std::max({from.velocity.norm(), to.velocity.norm(), params.min_speed_limit});
   FeasibilityLimits limits = FeasibilityLimits::from(lqr, faster * (1.0 + params.speed_margin), 0.0);
-  // Still planned without the model's rotor drag (docs/agility.md §7): with it, the exit from the
-  // agile circle at 8 m/s is shorter, and the bodyrate loop's hover-thrust estimate, left high by
-  // the circle, freezes once its landing test holds and disarms the hovering vehicle.
-  limits.drag = RotorDrag();
-  const Input a = inputsAt(from, lqr.gravity), b = inputsAt(to, lqr.gravity);
+  // Judged, like a path, on the inputs flown against the model's rotor drag (limits.drag).
+  const Input a = inputsAt(from, lqr.gravity, limits.drag), b = inputsAt(to, lqr.gravity, limits.drag);
   constexpr double kEndSlack = 1.0 + 1e-9;  // an end exactly at the limit stays within it
   limits.omega_max = std::min(lqr.omega_max, kEndSlack * std::max({params.input_fraction * lqr.omega_max,
                                                                    bodyRate(a).norm(), bodyRate(b).norm()}));

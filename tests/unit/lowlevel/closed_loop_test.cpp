@@ -346,5 +346,30 @@ TEST(Landing, LowThrustInTheAirDoesNotDisarm) {
   EXPECT_GT(h.plant.position.z(), 5.0);
 }
 
+TEST(Landing, AHardClimbDoesNotMakeTheSteadyClimbAfterItLookLanded) {
+  // 3 s at 1.5 g, then thrust g: a steady climb, where the accelerometer reads g as on the ground
+  // and the hover thrust learned in the hard climb (~13.6 m/s^2) makes g look "below hover". The
+  // landing test froze that estimate and disarmed the vehicle in the air 1 s later (the same after
+  // the agile circle); the rotors explain all the IMU reads, so it is not landed. No rotor drag
+  // here, or it would slow the climb and the reading.
+  VehicleParams vehicle;
+  vehicle.rotor_drag.setZero();
+  FlightHarness h(ImuErrors(), lowlevel::LowlevelParams(), vehicle);
+  h.plant.startHovering(20.0);
+  h.tick();
+  h.command(CommandType::kArm);
+  double highest_estimate = 0.0;
+  for (int i = 0; i < 5000; ++i) {
+    if (i % 10 == 0) h.sendRate(Vec3::Zero(), (i < 3000 ? 1.5 : 1.0) * kGravity);
+    h.tick();
+    highest_estimate = std::max(highest_estimate, h.loop.status().hover_thrust);
+  }
+  EXPECT_GT(highest_estimate, kGravity / h.loop.params().ground_detector.landed_thrust_ratio)
+      << "the climb no longer raises the estimate past the landing test: the test proves nothing";
+  EXPECT_EQ(h.loop.mode(), MotorMode::kRate) << "not flying at the end";
+  EXPECT_EQ(h.loop.counters().auto_disarms, 0) << "disarmed in the air";
+  EXPECT_GT(h.plant.velocity.z(), 10.0);
+}
+
 }  // namespace
 }  // namespace sdlqr::test

@@ -1,17 +1,20 @@
 // The feasibility check and the speed fit judge the inputs the controller flies (issue 25): with the
 // model's rotor drag (lqr.model_rotor_drag) each sample's thrust and body rates are those of the
 // controller's remap (drag_feedforward.hpp), so a path whose thrust is within c_max only without the
-// drag is refused, and `on_infeasible: scale` fits the speed the vehicle manages with it.
+// drag is refused, `on_infeasible: scale` fits the speed the vehicle manages with it, and the entries
+// and exits (transition.hpp) are planned on the same inputs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "sdlqr/trajectory/drag_feedforward.hpp"
 #include "sdlqr/trajectory/feasibility.hpp"
 #include "sdlqr/trajectory/speed_fit.hpp"
+#include "sdlqr/trajectory/transition.hpp"
 #include "agile_vehicle.hpp"
 
 namespace sdlqr::trajectory::drag_feasibility_test {
@@ -85,6 +88,46 @@ TEST(DragFeasibility, TheScaledSpeedIsTheOneFeasibleWithTheDrag) {
   const SpeedFit scaled = fitSpeed(givenPathAtSpeed(agileCircle(11.5), kG), 11.5, agileLimits(true), kG);
   EXPECT_NEAR(scaled.feasible_speed, with_drag.feasible_speed, 0.02 * with_drag.feasible_speed);
   EXPECT_TRUE(checkFeasibility(scaled.trajectory, agileLimits(true), kG).feasible());
+}
+
+// The largest thrust and body rate the controller flies along a transition: each point's drag-free
+// reference through its remap (flownInput), on a grid finer than the planner's.
+std::pair<double, double> flownExtremes(const Transition& transition, const LqrParams& lqr) {
+  double thrust = 0.0, rate = 0.0;
+  constexpr int kPoints = 1000;
+  for (int i = 0; i <= kPoints; ++i) {
+    const FlatReference free = flatToReference(transition.at(transition.duration() * i / kPoints), kG);
+    const Input u = flownInput(free.x, free.u, kG, lqr.rotorDrag());
+    thrust = std::max(thrust, u[kThrust]);
+    rate = std::max(rate, bodyRate(u).norm());
+  }
+  return {thrust, rate};
+}
+
+// GIVEN the agile vehicle with the rotor drag modelled WHEN the entry from a hover into the 3 m circle
+// at 9 m/s and the exit from its first sample to a stop are planned THEN each, flown with the drag
+// feed-forward, stays within the thrust and body rate it was planned for (planned drag-free, the
+// entry flew 41.4 m/s^2 and 14.2 rad/s against its 36 and 12).
+TEST(DragFeasibility, TransitionsArePlannedOnTheInputsFlownWithTheDrag) {
+  const LqrParams lqr = agileLqr(true);
+  const TransitionParams params;
+  const FlatState start = flatStateAtStart(agileCircle(9.0), kG);
+  FlatState hover;
+  hover.position = start.position;
+  const TransitionPlan plans[] = {planTransition(hover, start, lqr, params), planStop(start, lqr, params)};
+  for (const TransitionPlan& plan : plans) {
+    ASSERT_TRUE(plan.found) << describeTransition("transition", plan);
+    EXPECT_TRUE(plan.limits.drag.active());
+    const auto [thrust, rate] = flownExtremes(plan.transition, lqr);
+    std::printf("  %s; flown: thrust up to %.2f m/s^2, |omega| up to %.2f rad/s\n",
+                describeTransition("transition", plan).c_str(), thrust, rate);
+    // Within the limits it was planned for (input_fraction of c_max and omega_max where its ends
+    // allow), on a grid finer than the planner's.
+    EXPECT_LE(thrust, plan.limits.c_max * (1.0 + 1e-3));
+    EXPECT_LE(rate, plan.limits.omega_max * (1.0 + 1e-3));
+    EXPECT_LE(plan.limits.c_max, lqr.c_max);
+    EXPECT_LE(plan.limits.omega_max, lqr.omega_max);
+  }
 }
 
 }  // namespace

@@ -5,7 +5,8 @@
 // Modes (MotorCommand::mode):
 //   DISARMED --ARM/TAKEOFF--> IDLE (armed, rotors at idle) --fresh RATE_CMD--> RATE
 //   RATE --no valid RATE_CMD for rate_cmd_timeout of IMU time--> FAILSAFE --fresh RATE_CMD--> RATE
-//   RATE --at rest with thrust below hover for landed_time, or so when RATE_CMD stops--> DISARMED
+//   RATE --at rest, thrust below hover and the IMU reading more than it gives, for landed_time,
+//          or so when RATE_CMD stops--> DISARMED
 //   FAILSAFE --touchdown--> DISARMED;   DISARM (or LAND while IDLE) --> DISARMED from anywhere
 // Pure: time comes only from the IMU samples; step() does not allocate.
 

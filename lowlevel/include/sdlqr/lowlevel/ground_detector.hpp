@@ -4,6 +4,9 @@
 //             same, so the callers add what only the ground explains: a thrust command below
 //             hover (auto-disarm) or a commanded descent that does not happen (failsafe).
 //   impact:   one sample of specific force along body z well above what the rotors produce.
+//   body z:   the low-passed specific force along body z, for the caller to compare with the
+//             thrust it commands: well above it (support_margin), something else carries part of
+//             the weight.
 
 #include <string>
 
@@ -18,6 +21,7 @@ struct GroundDetectorParams : DeclaredParams<GroundDetectorParams> {
   double accel_tolerance;
   double gyro_tolerance;
   double impact_threshold;
+  double support_margin;
   double landed_thrust_ratio;
   double landed_time;
 
@@ -33,6 +37,7 @@ class GroundDetector {
   void update(const Vec3& gyro, const Vec3& accel, double rotor_specific_force, double dt);
   bool atRest() const { return at_rest_; }
   bool impact() const { return impact_; }
+  double filteredBodyZ() const { return body_z_force_; }
   double filteredSpecificForce() const { return specific_force_; }
   double filteredRotationRate() const { return rotation_rate_; }
   const GroundDetectorParams& params() const { return params_; }
@@ -46,6 +51,7 @@ class GroundDetector {
   double rotation_rate_ = 0.0;
   bool at_rest_ = false;
   bool impact_ = false;
+  double body_z_force_ = 0.0;  // [m/s^2] low-passed accel z
 };
 
 }  // namespace sdlqr::lowlevel

@@ -13,7 +13,8 @@
 // Each is a degree-7 polynomial per axis matching position and its first three derivatives at
 // both ends (a stop: velocity, acceleration and jerk zero at a free end position) (so the flat map gives continuous attitude and body rates, flatness.hpp), heading by a
 // quintic blend, and the shortest duration on a stepping-then-bisection search whose every point
-// of a fine grid keeps c in [c_min, c_max], ||omega|| <= omega_max and the speed within the larger
+// of a fine grid keeps c in [c_min, c_max], ||omega|| <= omega_max (the inputs flown against the
+// model's rotor drag, feasibility.hpp) and the speed within the larger
 // of the two ends' speeds and `min_speed_limit`, plus `speed_margin` (feasibility.hpp) — and
 // within `input_fraction` of omega_max and c_max where its ends allow: the feedback needs room
 // around the reference (a transition at omega_max left the vehicle none and it diverged at 9 m/s). A transition found is flyable
