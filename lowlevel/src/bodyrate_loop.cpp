@@ -220,7 +220,7 @@ void BodyrateLoop::flyRate(const Vec3& rate, double dt) {
   status_.maybe_landed = ground_detector_.atRest() && thrust < ground.landed_thrust_ratio * status_.hover_thrust &&
                          ground_detector_.filteredBodyZ() - thrust > ground.support_margin;
   status_.landed_time = status_.maybe_landed ? status_.landed_time + dt : 0.0;
-  if (status_.landed_time >= params_.ground_detector.landed_time) {
+  if (status_.landed_time >= ground.landed_time) {
     ++counters_.auto_disarms;
     enter(MotorMode::kDisarmed);
     return;

@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 
 #include "sdlqr/math/quaternion.hpp"
+#include "sdlqr/trajectory/drag_feedforward.hpp"
 #include "sdlqr/trajectory/polynomial.hpp"
 
 #include "transition_rows.hpp"
@@ -163,15 +164,16 @@ FeasibilityReport checkFeasibility(const Transition& transition, const Feasibili
 
 namespace {
 
-// The thrust and body rates a flat state asks for against the model's rotor drag (flatness.hpp,
-// heading held).
+// The thrust and body rates a flat state asks for, flown against the model's rotor drag as the
+// check judges every point (drag_feedforward.hpp flownInput; heading held).
 Input inputsAt(const FlatState& s, double gravity, const RotorDrag& drag) {
   FlatOutput f;
   f.velocity = s.velocity;
   f.acceleration = s.acceleration;
   f.jerk = s.jerk;
   f.yaw = s.yaw;
-  return flatToReference(f, gravity, drag).u;
+  const FlatReference free = flatToReference(f, gravity);
+  return flownInput(free.x, free.u, gravity, drag);
 }
 
 // The lqr limits, of which a transition uses only `input_fraction` of omega_max and c_max unless an
