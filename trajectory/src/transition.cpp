@@ -176,18 +176,18 @@ Input inputsAt(const FlatState& s, double gravity, const RotorDrag& drag) {
   return flownInput(free.x, free.u, gravity, drag);
 }
 
-// The lqr limits, of which a transition uses only `input_fraction` of omega_max and c_max unless an
-// end it joins needs more (a path flown at the limits); its speed as the params say.
+// The lqr limits, of which a transition uses only `fraction` of omega_max and c_max unless an end it
+// joins needs more (a path flown at the limits); its speed as the params say.
 FeasibilityLimits transitionLimits(const FlatState& from, const FlatState& to, const LqrParams& lqr,
-                                   const TransitionParams& params) {
+                                   const TransitionParams& params, double fraction) {
   const double faster = std::max({from.velocity.norm(), to.velocity.norm(), params.min_speed_limit});
   FeasibilityLimits limits = FeasibilityLimits::from(lqr, faster * (1.0 + params.speed_margin), 0.0);
   // Judged, like a path, on the inputs flown against the model's rotor drag (limits.drag).
   const Input a = inputsAt(from, lqr.gravity, limits.drag), b = inputsAt(to, lqr.gravity, limits.drag);
   constexpr double kEndSlack = 1.0 + 1e-9;  // an end exactly at the limit stays within it
-  limits.omega_max = std::min(lqr.omega_max, kEndSlack * std::max({params.input_fraction * lqr.omega_max,
+  limits.omega_max = std::min(lqr.omega_max, kEndSlack * std::max({fraction * lqr.omega_max,
                                                                    bodyRate(a).norm(), bodyRate(b).norm()}));
-  limits.c_max = std::min(lqr.c_max, kEndSlack * std::max({params.input_fraction * lqr.c_max, a[kThrust], b[kThrust]}));
+  limits.c_max = std::min(lqr.c_max, kEndSlack * std::max({fraction * lqr.c_max, a[kThrust], b[kThrust]}));
   return limits;
 }
 
@@ -226,19 +226,28 @@ TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const L
   return plan;
 }
 
+// The search within gentle_fraction of the limits where it finds a transition, else within
+// input_fraction: as gentle as the ends allow, the feedback keeping the most room.
+template <class Make>
+TransitionPlan gentlestFirst(const Make& make, const FlatState& from, const FlatState& to, const LqrParams& lqr,
+                             const TransitionParams& params) {
+  if (params.gentle_fraction < params.input_fraction) {
+    TransitionPlan gentle = search(make, transitionLimits(from, to, lqr, params, params.gentle_fraction), lqr, params);
+    if (gentle.found) return gentle;
+  }
+  return search(make, transitionLimits(from, to, lqr, params, params.input_fraction), lqr, params);
+}
+
 }  // namespace
 
 TransitionPlan planTransition(const FlatState& from, const FlatState& to, const LqrParams& lqr,
                               const TransitionParams& params) {
-  return search([&](double T) { return Transition::between(from, to, T); },
-                transitionLimits(from, to, lqr, params), lqr, params);
+  return gentlestFirst([&](double T) { return Transition::between(from, to, T); }, from, to, lqr, params);
 }
 
 TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const TransitionParams& params) {
-  return search([&](double T) { return Transition::stopping(from, T); },
-                transitionLimits(from, FlatState{from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw}, lqr,
-                                 params),
-                lqr, params);
+  const FlatState rest{from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw};
+  return gentlestFirst([&](double T) { return Transition::stopping(from, T); }, from, rest, lqr, params);
 }
 
 bool closeEnough(const FlatState& from, const FlatState& to, const TransitionParams& params) {

@@ -130,5 +130,36 @@ TEST(DragFeasibility, TransitionsArePlannedOnTheInputsFlownWithTheDrag) {
   }
 }
 
+// GIVEN the agile vehicle and the entry from a hover into its 3 m circle WHEN gentle_fraction is 0.5
+// (config/agile752.yaml) THEN at 4 m/s the entry is planned within half the limits, where the
+// shortest within input_fraction (0.8, gentle_fraction no lower: one search) asks for more than
+// that; at 10 m/s, where no entry within half the limits reaches the circle, it is planned within
+// input_fraction as before.
+TEST(DragFeasibility, AnEntryIsPlannedWithinGentleFractionWhereOneExists) {
+  const LqrParams lqr = agileLqr(true);
+  TransitionParams gentle;
+  gentle.gentle_fraction = 0.5;
+  const TransitionParams shortest;  // gentle_fraction = input_fraction = 0.8
+  const auto entryInto = [&](double speed, const TransitionParams& params) {
+    const FlatState start = flatStateAtStart(agileCircle(speed), kG);
+    FlatState hover;
+    hover.position = start.position;
+    return planTransition(hover, start, lqr, params);
+  };
+  const TransitionPlan slow_gentle = entryInto(4.0, gentle), slow_shortest = entryInto(4.0, shortest);
+  ASSERT_TRUE(slow_gentle.found && slow_shortest.found);
+  std::printf("  4 m/s: %s (gentle), %s (shortest)\n", describeTransition("entry", slow_gentle).c_str(),
+              describeTransition("entry", slow_shortest).c_str());
+  EXPECT_LE(slow_gentle.report.max_body_rate, 0.5 * lqr.omega_max * (1.0 + 1e-6));
+  EXPECT_LE(slow_gentle.report.max_thrust, 0.5 * lqr.c_max * (1.0 + 1e-6));
+  EXPECT_GT(slow_shortest.report.max_body_rate, 0.5 * lqr.omega_max) << "the shortest entry uses more";
+  EXPECT_GT(slow_gentle.transition.duration(), slow_shortest.transition.duration());
+
+  const TransitionPlan fast_gentle = entryInto(10.0, gentle), fast_shortest = entryInto(10.0, shortest);
+  ASSERT_TRUE(fast_gentle.found) << describeTransition("entry", fast_gentle);
+  EXPECT_EQ(fast_gentle.transition.duration(), fast_shortest.transition.duration()) << "input_fraction's plan";
+  EXPECT_EQ(fast_gentle.limits.omega_max, fast_shortest.limits.omega_max);
+}
+
 }  // namespace
 }  // namespace sdlqr::trajectory::drag_feasibility_test

@@ -18,7 +18,9 @@
 // of the two ends' speeds and `min_speed_limit`, plus `speed_margin` (feasibility.hpp) — and
 // within `input_fraction` of omega_max and c_max where its ends allow: the feedback needs room
 // around the reference (a transition at omega_max left the vehicle none and it diverged at 9 m/s). A transition found is flyable
-// by construction; none is found only beyond `max_duration`.
+// by construction; none is found only beyond `max_duration`. Planned first within `gentle_fraction`
+// where that finds one: the shortest transition within 80 % of an agile vehicle's limits tilts 50
+// degrees in 0.2 s, which a hover LQR does not follow (docs/agility.md §5).
 //
 // Fixed-size and allocation-free: the controller plans a transition inside a tick.
 
@@ -38,6 +40,7 @@ struct TransitionParams {
   double min_speed_limit;      // [m/s] speed bound when both ends are slower
   double speed_margin;         // [-] a transition may exceed the faster end's speed by this fraction
   double input_fraction;       // [-] of omega_max and c_max a transition uses (unless its ends need more)
+  double gentle_fraction;      // [-] of omega_max and c_max tried first (below input_fraction)
   double position_tolerance;   // [m] closer than this (and the next two) to the path's start: no entry
   double velocity_tolerance;   // [m/s]
   double acceleration_tolerance;  // [m/s^2]

@@ -55,6 +55,15 @@ mission::Scenario circleAt(double speed) {
   return s;
 }
 
+// The agile benchmark's 3 m circle (config/compare/agile_circle_sweep.yaml) at `speed`.
+mission::Scenario agileCircleAt(double speed) {
+  mission::Scenario s = mission::Scenario::load(kSourceDir + "/config/compare/agile_circle_sweep.yaml");
+  for (mission::ScenarioEvent& e : s.events) {
+    if (e.kind == mission::ScenarioEvent::Kind::kTrajectory) e.trajectory.speed = speed;
+  }
+  return s;
+}
+
 const analysis::Check* checkWithKey(const analysis::FlightReport& r, const std::string& key) {
   for (const analysis::Check& c : r.checks) {
     if (c.key.compare(0, key.size(), key) == 0) return &c;
@@ -214,6 +223,38 @@ TEST(Agility, TheRotorDragModelFliesTheAgileScaledMinSnap) {
   int failed = 0;
   for (const analysis::Check& c : without.report.checks) failed += c.pass ? 0 : 1;
   EXPECT_EQ(failed, 1) << "only the completion fails";
+}
+
+// GIVEN the agile vehicle's 3 m circle at 4 m/s and the hover LQR (K solved once at hover) WHEN the
+// entry is planned within half the limits (gentle_fraction 0.5, config/agile752.yaml) THEN the law
+// flies the circle within the sweep's path criteria with every seed; planned as the shortest within
+// 80 % of the limits, the entry reference tilts 50 degrees in 0.2 s, the hover K does not follow it
+// and the guard aborts the path before the circle (tilt 86 degrees).
+TEST(Agility, AGentleEntryLetsTheHoverLqrFlyTheAgileCircle) {
+  for (long long seed : {21LL, 1LL, 2LL}) {
+    mission::Scenario s = agileCircleAt(4.0);
+    s.seed = seed;
+    const closedloop::StackConfig config = withLaw(s, ControlLaw::kHoverLqr);
+    ASSERT_LT(config.controller.transition.gentle_fraction, config.controller.transition.input_fraction);
+    const AgileFlight f = flyWith(s, config);
+    ASSERT_EQ(f.report.trajectories.size(), 1u);
+    std::cout << "seed " << seed << ": path error RMS " << f.report.trajectories[0].path_error_rms << " m, max "
+              << f.report.trajectories[0].path_error_max << " m, tilt " << f.report.max_tilt_deg << " deg\n";
+    EXPECT_EQ(f.guard_aborts, 0) << "seed " << seed;
+    for (const char* key : {"path_error_rms", "path_error_max"}) {
+      const analysis::Check* check = checkWithKey(f.report, key);
+      ASSERT_NE(check, nullptr) << key;
+      EXPECT_TRUE(check->pass) << "seed " << seed << ": " << check->name << " = " << check->value;
+    }
+  }
+  mission::Scenario s = agileCircleAt(4.0);
+  closedloop::StackConfig shortest = withLaw(s, ControlLaw::kHoverLqr);
+  shortest.controller.transition.gentle_fraction = shortest.controller.transition.input_fraction;
+  const AgileFlight f = flyWith(s, shortest);
+  std::cout << "shortest entry: guard trip " << trajectory::toString(f.trip) << ", max tilt " << f.report.max_tilt_deg
+            << " deg\n";
+  EXPECT_EQ(f.guard_aborts, 1);
+  EXPECT_GT(f.report.max_tilt_deg, 80.0);
 }
 
 }  // namespace
