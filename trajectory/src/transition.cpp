@@ -191,38 +191,53 @@ FeasibilityLimits transitionLimits(const FlatState& from, const FlatState& to, c
   return limits;
 }
 
+// Whether every grid point of the transition is within the limits (checkFeasibility's verdict),
+// stopping at the first that is not: most tries of a search fail, and nobody reads their report.
+bool withinLimits(const Transition& transition, const FeasibilityLimits& limits, double gravity) {
+  FeasibilityReport report;
+  for (int i = 0; i <= kGridPoints; ++i) {
+    const FlatReference ref = flatToReference(transition.at(transition.duration() * static_cast<double>(i) / kGridPoints), gravity);
+    accountSample(report, ref.x, ref.u, limits, gravity);
+    if (ref.singular) report.min_thrust = std::min(report.min_thrust, 0.0);
+    judgeReport(report, limits);  // extremes only grow: once beyond a limit, the whole is
+    if (!report.feasible()) return false;
+  }
+  return true;
+}
+
 // The stepping-then-bisection search for the shortest flyable duration; `make(T)` is the
-// transition of duration T.
+// transition of duration T. The plan's report is the full check of the transition found, or of
+// the longest tried when none is.
 template <class Make>
 TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const LqrParams& lqr,
                       const TransitionParams& params) {
   TransitionPlan plan;
   plan.limits = limits;
-  auto attempt = [&](double duration, TransitionPlan& into) {
-    into.transition = make(duration);
-    into.report = checkFeasibility(into.transition, plan.limits, lqr.gravity);
-    return into.report.feasible();
-  };
   // Too short asks for too much thrust or rate; too long, when the ends move, for too much speed:
   // the flyable durations are a window, stepped through finely enough not to jump over it.
   double low = 0.0, high = std::min(kFirstDuration, params.max_duration);
-  while (!attempt(high, plan)) {
-    if (high >= params.max_duration) return plan;  // found stays false: the longest tried is reported
+  plan.transition = make(high);
+  while (!withinLimits(plan.transition, limits, lqr.gravity)) {
+    if (high >= params.max_duration) {  // found stays false: the longest tried is reported
+      plan.report = checkFeasibility(plan.transition, limits, lqr.gravity);
+      return plan;
+    }
     low = high;
     high = std::min(kDurationStep * high, params.max_duration);
+    plan.transition = make(high);
   }
   plan.found = true;
-  TransitionPlan trial = plan;
   for (int i = 0; i < kBisections && low > 0.0; ++i) {
     const double middle = 0.5 * (low + high);
-    if (attempt(middle, trial)) {
+    const Transition trial = make(middle);
+    if (withinLimits(trial, limits, lqr.gravity)) {
       high = middle;
-      plan.transition = trial.transition;
-      plan.report = trial.report;
+      plan.transition = trial;
     } else {
       low = middle;
     }
   }
+  plan.report = checkFeasibility(plan.transition, limits, lqr.gravity);
   return plan;
 }
 
