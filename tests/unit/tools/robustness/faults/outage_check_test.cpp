@@ -84,6 +84,17 @@ TEST(OutageCheck, GainsOutageFindsTheHoverKAfterTheTimeoutAndTheResume) {
   add(slow.heartbeat, up, 14.3);
   EXPECT_NEAR(measureGainsOutage(slow, wall(5.05), wall(14.0), 1.0).resume_after_up_s, 1.0, 1e-6);
 
+  // The last GAINS, sent at 5.0 s before the kill at 5.05 s, reaching the recorder only at 5.15 s
+  // (a loaded machine): the fallback is still judged from it, not from the one before (which
+  // found the controller's switch at 6.01 s nine ticks late).
+  logger::FlightLog late = log;
+  for (size_t i = 0; i < late.gains.size(); ++i) {
+    if (late.gains.messages[i].utime == us(5.0)) late.gains.receive_utime[i] = wall(5.15);
+  }
+  const GainsOutage l = measureGainsOutage(late, wall(5.05), wall(15.0), 1.0);
+  EXPECT_EQ(l.last_gains_utime, us(5.0));
+  EXPECT_EQ(l.late_non_fallback_commands, 0);
+
   // A controller that never falls back is caught.
   logger::FlightLog stuck = log;
   for (RateCommand& command : stuck.rate_command.messages) command.gains_status = GainsFreshness::kStale;

@@ -17,7 +17,7 @@ namespace sdlqr::faults {
 int64_t simTimeAtWall(const logger::FlightLog& log, int64_t wall_utime);
 
 struct GainsOutage {
-  int64_t last_gains_utime = -1;     // newest GAINS received before the kill
+  int64_t last_gains_utime = -1;     // the killed solver's last GAINS (the newest received before the restart)
   int64_t first_fallback_utime = -1; // first RATE_CMD on the hover K after that
   int64_t fallback_commands = 0;     // RATE_CMD on the hover K before the restart
   // RATE_CMD stamped later than last GAINS + timeout (+ one tick), received before the restart,
