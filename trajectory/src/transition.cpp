@@ -150,14 +150,22 @@ FlatOutput Transition::at(double t) const {
   return f;
 }
 
+namespace {
+
+// Grid point i of a transition (kGridPoints + 1 of them, ends included) into the report's extremes.
+void accountGridPoint(FeasibilityReport& report, const Transition& transition, int i, const FeasibilityLimits& limits,
+                      double gravity) {
+  const FlatOutput flat = transition.at(transition.duration() * static_cast<double>(i) / kGridPoints);
+  const FlatReference ref = flatToReference(flat, gravity);
+  accountSample(report, ref.x, ref.u, limits, gravity);
+  if (ref.singular) report.min_thrust = std::min(report.min_thrust, 0.0);
+}
+
+}  // namespace
+
 FeasibilityReport checkFeasibility(const Transition& transition, const FeasibilityLimits& limits, double gravity) {
   FeasibilityReport report;
-  for (int i = 0; i <= kGridPoints; ++i) {
-    const FlatOutput flat = transition.at(transition.duration() * static_cast<double>(i) / kGridPoints);
-    const FlatReference ref = flatToReference(flat, gravity);
-    accountSample(report, ref.x, ref.u, limits, gravity);
-    if (ref.singular) report.min_thrust = std::min(report.min_thrust, 0.0);
-  }
+  for (int i = 0; i <= kGridPoints; ++i) accountGridPoint(report, transition, i, limits, gravity);
   judgeReport(report, limits);
   return report;
 }
@@ -196,9 +204,7 @@ FeasibilityLimits transitionLimits(const FlatState& from, const FlatState& to, c
 bool withinLimits(const Transition& transition, const FeasibilityLimits& limits, double gravity) {
   FeasibilityReport report;
   for (int i = 0; i <= kGridPoints; ++i) {
-    const FlatReference ref = flatToReference(transition.at(transition.duration() * static_cast<double>(i) / kGridPoints), gravity);
-    accountSample(report, ref.x, ref.u, limits, gravity);
-    if (ref.singular) report.min_thrust = std::min(report.min_thrust, 0.0);
+    accountGridPoint(report, transition, i, limits, gravity);
     judgeReport(report, limits);  // extremes only grow: once beyond a limit, the whole is
     if (!report.feasible()) return false;
   }

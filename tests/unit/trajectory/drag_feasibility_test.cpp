@@ -104,6 +104,14 @@ std::pair<double, double> flownExtremes(const Transition& transition, const LqrP
   return {thrust, rate};
 }
 
+// The entry from a hover at the agile circle's first sample into the circle at `speed`.
+TransitionPlan entryIntoAgileCircle(double speed, const LqrParams& lqr, const TransitionParams& params) {
+  const FlatState start = flatStateAtStart(agileCircle(speed), kG);
+  FlatState hover;
+  hover.position = start.position;
+  return planTransition(hover, start, lqr, params);
+}
+
 // GIVEN the agile vehicle with the rotor drag modelled WHEN the entry from a hover into the 3 m circle
 // at 9 m/s and the exit from its first sample to a stop are planned THEN each, flown with the drag
 // feed-forward, stays within the thrust and body rate it was planned for (planned drag-free, the
@@ -112,9 +120,7 @@ TEST(DragFeasibility, TransitionsArePlannedOnTheInputsFlownWithTheDrag) {
   const LqrParams lqr = agileLqr(true);
   const TransitionParams params;
   const FlatState start = flatStateAtStart(agileCircle(9.0), kG);
-  FlatState hover;
-  hover.position = start.position;
-  const TransitionPlan plans[] = {planTransition(hover, start, lqr, params), planStop(start, lqr, params)};
+  const TransitionPlan plans[] = {entryIntoAgileCircle(9.0, lqr, params), planStop(start, lqr, params)};
   for (const TransitionPlan& plan : plans) {
     ASSERT_TRUE(plan.found) << describeTransition("transition", plan);
     EXPECT_TRUE(plan.limits.drag.active());
@@ -140,13 +146,8 @@ TEST(DragFeasibility, AnEntryIsPlannedWithinGentleFractionWhereOneExists) {
   TransitionParams gentle;
   gentle.gentle_fraction = 0.5;
   const TransitionParams shortest;  // gentle_fraction = input_fraction = 0.8
-  const auto entryInto = [&](double speed, const TransitionParams& params) {
-    const FlatState start = flatStateAtStart(agileCircle(speed), kG);
-    FlatState hover;
-    hover.position = start.position;
-    return planTransition(hover, start, lqr, params);
-  };
-  const TransitionPlan slow_gentle = entryInto(4.0, gentle), slow_shortest = entryInto(4.0, shortest);
+  const TransitionPlan slow_gentle = entryIntoAgileCircle(4.0, lqr, gentle),
+                       slow_shortest = entryIntoAgileCircle(4.0, lqr, shortest);
   ASSERT_TRUE(slow_gentle.found && slow_shortest.found);
   std::printf("  4 m/s: %s (gentle), %s (shortest)\n", describeTransition("entry", slow_gentle).c_str(),
               describeTransition("entry", slow_shortest).c_str());
@@ -155,7 +156,8 @@ TEST(DragFeasibility, AnEntryIsPlannedWithinGentleFractionWhereOneExists) {
   EXPECT_GT(slow_shortest.report.max_body_rate, 0.5 * lqr.omega_max) << "the shortest entry uses more";
   EXPECT_GT(slow_gentle.transition.duration(), slow_shortest.transition.duration());
 
-  const TransitionPlan fast_gentle = entryInto(10.0, gentle), fast_shortest = entryInto(10.0, shortest);
+  const TransitionPlan fast_gentle = entryIntoAgileCircle(10.0, lqr, gentle),
+                       fast_shortest = entryIntoAgileCircle(10.0, lqr, shortest);
   ASSERT_TRUE(fast_gentle.found) << describeTransition("entry", fast_gentle);
   EXPECT_EQ(fast_gentle.transition.duration(), fast_shortest.transition.duration()) << "input_fraction's plan";
   EXPECT_EQ(fast_gentle.limits.omega_max, fast_shortest.limits.omega_max);
