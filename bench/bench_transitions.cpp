@@ -2,7 +2,10 @@
 // does inside a tick when a TRAJECTORY arrives or a GOTO leaves a path: the agile vehicle
 // (config/agile752.yaml, its rotor drag modelled) and its 3 m circle. `gentle` plans as the vehicle
 // file says (first within gentle_fraction of the limits); `shortest` with gentle_fraction raised to
-// input_fraction (one search, as before gentle entries). Figures: docs/agility.md §5.
+// input_fraction (one search, as before gentle entries). `BM_PlanStopInATurn`: a stop only the last
+// of the planner's searches finds (the 9 m/s lemniscate pulling 28 m/s^2 into a turn: the four
+// gentler searches fail first); `BM_CheckPath`: the scenario check, a stop from every moving sample.
+// Figures: docs/agility.md §1 and §5.
 //
 //   bench_transitions [Google Benchmark flags]
 
@@ -13,6 +16,8 @@
 #include "sdlqr/config/config.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/trajectory/closed_paths.hpp"
+#include "sdlqr/trajectory/path_check.hpp"
+#include "sdlqr/trajectory/speed_fit.hpp"
 #include "sdlqr/trajectory/transition.hpp"
 
 namespace sdlqr::bench {
@@ -77,6 +82,40 @@ void BM_PlanStop(benchmark::State& state) {
   timePlanning(state, [&] { return trajectory::planStop(start, agileVehicle().lqr, params); });
 }
 BENCHMARK(BM_PlanStop)->ArgsProduct({{4, 10}, {1, 0}})->ArgNames({"speed", "gentle"})->Unit(benchmark::kMillisecond);
+
+// The lemniscate of config/compare/agile752_lemniscate.yaml (3 m half-width) at `speed` [m/s].
+Trajectory agileLemniscate(double speed) {
+  trajectory::ClosedPathSpec lemniscate;
+  lemniscate.shape = trajectory::ClosedPathShape::kLemniscate;
+  lemniscate.speed = speed;
+  lemniscate.size = 3.0;
+  lemniscate.center = Vec3(0.0, 0.0, 2.0);
+  return trajectory::sampleClosedPath(lemniscate, agileVehicle().lqr.gravity);
+}
+
+void BM_PlanStopInATurn(benchmark::State& state) {
+  const TrajectorySample& turning = agileLemniscate(9.0).samples.at(60);
+  const trajectory::FlatState from = trajectory::flatStateOf(turning.x, turning.u, 0.0, agileVehicle().lqr.gravity);
+  const trajectory::TransitionParams params = agileVehicle().transition;
+  timePlanning(state, [&] { return trajectory::planStop(from, agileVehicle().lqr, params, 9.0); });
+}
+BENCHMARK(BM_PlanStopInATurn)->Unit(benchmark::kMillisecond);
+
+// Args: speed [m/s]. Counter: the moving samples a stop was planned from.
+void BM_CheckPath(benchmark::State& state) {
+  const Trajectory path = agileLemniscate(static_cast<double>(state.range(0)));
+  const LqrParams& lqr = agileVehicle().lqr;
+  const auto limits = trajectory::FeasibilityLimits::from(lqr, trajectory::peakSpeed(path) * 1.01, 0.5);
+  const Vec3 hover = position(path.samples.front().x);
+  trajectory::PathCheck check;
+  for (auto _ : state) {
+    check = trajectory::checkPath(path, limits, hover, 0.0, lqr, agileVehicle().transition);
+    benchmark::DoNotOptimize(check);
+  }
+  if (!check.feasible()) state.SkipWithError("refused");
+  state.counters["stops"] = check.exits_checked;
+}
+BENCHMARK(BM_CheckPath)->Arg(4)->Arg(9)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace sdlqr::bench

@@ -72,6 +72,7 @@ std::string ReferenceGenerator::loadTrajectory(const Trajectory& trajectory, int
   const std::string error = tracker_.load(trajectory, static_cast<double>(start_utime) * 1e-6);
   if (!error.empty()) return error;
   trajectory_seq_ = trajectory.seq;
+  path_speed_ = trajectory::peakSpeed(trajectory);
   phase_ = FlightPhase::kTrajectory;
   entry_pending_ = params_.transition.enabled;
   entering_ = false;

@@ -2,9 +2,10 @@
 
 namespace sdlqr::controller {
 
-bool TransitionReference::start(const trajectory::FlatState& from, const trajectory::FlatState* to, double start_s) {
-  const trajectory::TransitionPlan plan =
-      to ? trajectory::planTransition(from, *to, lqr_, params_) : trajectory::planStop(from, lqr_, params_);
+bool TransitionReference::start(const trajectory::FlatState& from, const trajectory::FlatState* to, double start_s,
+                                double path_speed) {
+  const trajectory::TransitionPlan plan = to ? trajectory::planTransition(from, *to, lqr_, params_, path_speed)
+                                             : trajectory::planStop(from, lqr_, params_, path_speed);
   if (!plan.found) return false;
   plan_ = plan;
   start_s_ = start_s;

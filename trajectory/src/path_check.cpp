@@ -1,5 +1,9 @@
 #include "sdlqr/trajectory/path_check.hpp"
 
+#include <cstdio>
+
+#include "sdlqr/trajectory/speed_fit.hpp"
+
 namespace sdlqr::trajectory {
 
 namespace {
@@ -11,6 +15,34 @@ size_t fastestSample(const Trajectory& path) {
     if (velocity(path.samples[k].x).norm() > velocity(path.samples[fastest].x).norm()) fastest = k;
   }
   return fastest;
+}
+
+FlatState flatStateAt(const TrajectorySample& sample, double gravity) {
+  return flatStateOf(sample.x, sample.u, 0.0, gravity);  // the controller's exit, as it starts one
+}
+
+// A stop from every sample the path moves at (a GOTO or LAND may come at any of them), under the
+// path's speed as the controller plans it. The plan kept is the first sample's without a stop, else
+// the fastest sample's. A path whose samples are beyond the limits is refused (or flown as given)
+// whatever its stops: only the fastest sample's is planned, for the report.
+void checkExits(PathCheck& check, const Trajectory& path, double path_speed, const LqrParams& lqr,
+                const TransitionParams& transition) {
+  const size_t fastest = fastestSample(path);
+  check.exit_needed = velocity(path.samples[fastest].x).norm() > transition.velocity_tolerance;
+  if (!check.exit_needed) return;
+  check.exit = planStop(flatStateAt(path.samples[fastest], lqr.gravity), lqr, transition, path_speed);
+  check.exit_from_t = path.samples[fastest].t;
+  if (!check.samples.feasible()) return;
+  for (const TrajectorySample& sample : path.samples) {
+    if (velocity(sample.x).norm() <= transition.velocity_tolerance) continue;
+    ++check.exits_checked;
+    const FlatState from = flatStateAt(sample, lqr.gravity);
+    if (stopExists(from, lqr, transition, path_speed)) continue;
+    if (check.exits_missing++ == 0) {
+      check.exit = planStop(from, lqr, transition, path_speed);  // its report, for the refusal
+      check.exit_from_t = sample.t;
+    }
+  }
 }
 
 }  // namespace
@@ -27,10 +59,9 @@ PathCheck checkPath(const Trajectory& path, const FeasibilityLimits& limits, con
   at_rest.yaw = yaw;
   const FlatState start = flatStateAtStart(path, lqr.gravity);
   check.entry_needed = !closeEnough(at_rest, start, transition);
-  if (check.entry_needed) check.entry = planTransition(at_rest, start, lqr, transition);
-  const TrajectorySample& fastest = path.samples[fastestSample(path)];
-  check.exit_needed = velocity(fastest.x).norm() > transition.velocity_tolerance;
-  if (check.exit_needed) check.exit = planStop(flatStateOf(fastest.x, fastest.u, 0.0, lqr.gravity), lqr, transition);
+  const double path_speed = peakSpeed(path);  // the controller's transitions are planned under it
+  if (check.entry_needed) check.entry = planTransition(at_rest, start, lqr, transition, path_speed);
+  checkExits(check, path, path_speed, lqr, transition);
   return check;
 }
 
@@ -38,8 +69,18 @@ std::string describePathCheck(const PathCheck& check) {
   std::string text = describeViolations(check.samples, check.limits);
   if (!check.transitions) return text;
   text += check.entry_needed ? " " + describeTransition("entry", check.entry) + ";" : " entry: none needed;";
-  text += check.exit_needed ? " " + describeTransition("exit", check.exit) + ";" : " exit: none needed;";
-  return text;
+  if (!check.exit_needed) return text + " exit: none needed;";
+  char from[96];
+  if (check.exits_checked == 0) {  // the samples are beyond the limits: the fastest's alone
+    std::snprintf(from, sizeof from, "from the fastest sample (%.3g s)", check.exit_from_t);
+  } else if (check.exits_missing == 0) {
+    std::snprintf(from, sizeof from, "a stop from each of %d moving samples; from the fastest (%.3g s)",
+                  check.exits_checked, check.exit_from_t);
+  } else {
+    std::snprintf(from, sizeof from, "no stop from %d of %d moving samples; from the first (%.3g s)",
+                  check.exits_missing, check.exits_checked, check.exit_from_t);
+  }
+  return text + " exit: " + describeTransition(from, check.exit) + ";";
 }
 
 }  // namespace sdlqr::trajectory

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 #include <Eigen/LU>
 
@@ -185,10 +186,11 @@ Input inputsAt(const FlatState& s, double gravity, const RotorDrag& drag) {
 }
 
 // The lqr limits, of which a transition uses only `fraction` of omega_max and c_max unless an end it
-// joins needs more (a path flown at the limits); its speed as the params say.
+// joins needs more (a path flown at the limits); its speed within the faster of its ends' speeds,
+// min_speed_limit and `speed_floor`, plus speed_margin.
 FeasibilityLimits transitionLimits(const FlatState& from, const FlatState& to, const LqrParams& lqr,
-                                   const TransitionParams& params, double fraction) {
-  const double faster = std::max({from.velocity.norm(), to.velocity.norm(), params.min_speed_limit});
+                                   const TransitionParams& params, double fraction, double speed_floor) {
+  const double faster = std::max({from.velocity.norm(), to.velocity.norm(), params.min_speed_limit, speed_floor});
   FeasibilityLimits limits = FeasibilityLimits::from(lqr, faster * (1.0 + params.speed_margin), 0.0);
   // Judged, like a path, on the inputs flown against the model's rotor drag (limits.drag).
   const Input a = inputsAt(from, lqr.gravity, limits.drag), b = inputsAt(to, lqr.gravity, limits.drag);
@@ -211,12 +213,16 @@ bool withinLimits(const Transition& transition, const FeasibilityLimits& limits,
   return true;
 }
 
+// What a search is for: the shortest flyable transition and its report, or only whether one exists
+// (the path check's stops from every sample: the stepping finds one, the bisection only shortens it).
+enum class Want { kShortest, kExistence };
+
 // The stepping-then-bisection search for the shortest flyable duration; `make(T)` is the
 // transition of duration T. The plan's report is the full check of the transition found, or of
-// the longest tried when none is.
+// the longest tried when none is (kShortest only).
 template <class Make>
 TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const LqrParams& lqr,
-                      const TransitionParams& params) {
+                      const TransitionParams& params, Want want) {
   TransitionPlan plan;
   plan.limits = limits;
   // Too short asks for too much thrust or rate; too long, when the ends move, for too much speed:
@@ -225,7 +231,7 @@ TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const L
   plan.transition = make(high);
   while (!withinLimits(plan.transition, limits, lqr.gravity)) {
     if (high >= params.max_duration) {  // found stays false: the longest tried is reported
-      plan.report = checkFeasibility(plan.transition, limits, lqr.gravity);
+      if (want == Want::kShortest) plan.report = checkFeasibility(plan.transition, limits, lqr.gravity);
       return plan;
     }
     low = high;
@@ -233,6 +239,7 @@ TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const L
     plan.transition = make(high);
   }
   plan.found = true;
+  if (want == Want::kExistence) return plan;
   for (int i = 0; i < kBisections && low > 0.0; ++i) {
     const double middle = 0.5 * (low + high);
     const Transition trial = make(middle);
@@ -247,28 +254,59 @@ TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const L
   return plan;
 }
 
-// The search within gentle_fraction of the limits where it finds a transition, else within
-// input_fraction: as gentle as the ends allow, the feedback keeping the most room.
+// The searches in order of preference; the first that finds a transition is flown. Within
+// gentle_fraction of omega_max and c_max, then input_fraction (the feedback keeps the most room),
+// under the speed bound of the transition's ends. Where those find none: under the top speed of the
+// path it joins or leaves (a stop from a slow sample where the path accelerates hard gains speed
+// while its acceleration turns round: the paper's min-snap leaving a corner at 0.6 m/s and 3.5
+// m/s^2), and last within the full limits the path itself was checked against (a stop from a sharp
+// turn flown near them: the agile lemniscate at 9 m/s, 28 m/s^2 into the turn, needs 40 of 45 m/s^2).
+// A tier whose limits are an earlier one's is not searched again; none found: the widest's report.
 template <class Make>
-TransitionPlan gentlestFirst(const Make& make, const FlatState& from, const FlatState& to, const LqrParams& lqr,
-                             const TransitionParams& params) {
-  if (params.gentle_fraction < params.input_fraction) {
-    TransitionPlan gentle = search(make, transitionLimits(from, to, lqr, params, params.gentle_fraction), lqr, params);
-    if (gentle.found) return gentle;
+TransitionPlan preferredFirst(const Make& make, const FlatState& from, const FlatState& to, const LqrParams& lqr,
+                              const TransitionParams& params, double path_speed) {
+  struct Tier {
+    double fraction;
+    double speed_floor;
+  };
+  const double gentle = std::min(params.gentle_fraction, params.input_fraction);
+  const Tier tiers[] = {{gentle, 0.0}, {params.input_fraction, 0.0},  // the ends' speed
+                        {gentle, path_speed}, {params.input_fraction, path_speed}, {1.0, path_speed}};
+  TransitionPlan plan;
+  FeasibilityLimits tried[std::size(tiers)];
+  int tried_count = 0;
+  for (const Tier& tier : tiers) {
+    const FeasibilityLimits limits = transitionLimits(from, to, lqr, params, tier.fraction, tier.speed_floor);
+    const auto same = [&](const FeasibilityLimits& l) {
+      return l.omega_max == limits.omega_max && l.c_max == limits.c_max && l.v_max == limits.v_max;
+    };
+    if (std::any_of(tried, tried + tried_count, same)) continue;
+    tried[tried_count++] = limits;
+    plan = search(make, limits, lqr, params, Want::kShortest);
+    if (plan.found) return plan;
   }
-  return search(make, transitionLimits(from, to, lqr, params, params.input_fraction), lqr, params);
+  return plan;
 }
 
 }  // namespace
 
 TransitionPlan planTransition(const FlatState& from, const FlatState& to, const LqrParams& lqr,
-                              const TransitionParams& params) {
-  return gentlestFirst([&](double T) { return Transition::between(from, to, T); }, from, to, lqr, params);
+                              const TransitionParams& params, double path_speed) {
+  return preferredFirst([&](double T) { return Transition::between(from, to, T); }, from, to, lqr, params, path_speed);
 }
 
-TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const TransitionParams& params) {
+TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const TransitionParams& params,
+                        double path_speed) {
   const FlatState rest{from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw};
-  return gentlestFirst([&](double T) { return Transition::stopping(from, T); }, from, rest, lqr, params);
+  return preferredFirst([&](double T) { return Transition::stopping(from, T); }, from, rest, lqr, params, path_speed);
+}
+
+// Only the last tier's search: each tier's limits contain the ones before, and every search tries
+// the same durations, so where an earlier tier finds a stop the last finds one too.
+bool stopExists(const FlatState& from, const LqrParams& lqr, const TransitionParams& params, double path_speed) {
+  const FlatState rest{from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw};
+  const FeasibilityLimits widest = transitionLimits(from, rest, lqr, params, 1.0, path_speed);
+  return search([&](double T) { return Transition::stopping(from, T); }, widest, lqr, params, Want::kExistence).found;
 }
 
 bool closeEnough(const FlatState& from, const FlatState& to, const TransitionParams& params) {

@@ -11,6 +11,8 @@
 #include "controller_test_commands.hpp"
 #include "sdlqr/math/model.hpp"
 #include "sdlqr/trajectory/closed_paths.hpp"
+#include "sdlqr/trajectory/paper_cases.hpp"
+#include "sdlqr/trajectory/sampling.hpp"
 #include "sdlqr/trajectory/speed_fit.hpp"
 
 namespace sdlqr::controller {
@@ -252,6 +254,38 @@ TEST(ReferenceGenerator, ALandWhileTrackingStopsThenLands) {
   }
   EXPECT_EQ(gen.phase(), FlightPhase::kLanding);
   EXPECT_LT(velocity(ref.x).norm(), 1e-9) << "at rest where the stop ended";
+}
+
+// GIVEN the paper's min-snap flown by the clock (after its entry) WHEN a LAND comes as it leaves its start (1.35 m/s,
+// accelerating at 4.3 m/s^2: no stop within 1.2 x that speed) THEN the reference still stops through an exit,
+// planned under the path's speed, before the landing: not a jump from the path to the ramp.
+TEST(ReferenceGenerator, ALandWhereThePathAcceleratesHardStillStopsFirst) {
+  const trajectory::TrajectoryParams params;
+  Trajectory minsnap = trajectory::sampleTrajectory(trajectory::paperMinSnapFast(params), params.sample_dt,
+                                                    kDefaultGravity);
+  minsnap.tracking = ReferenceMode::kTemporal;
+  ReferenceGenerator gen = hoveringAt(position(minsnap.samples.front().x));
+  ASSERT_EQ(gen.setTrajectory(minsnap, 10000), "");
+  Reference ref;
+  double t = 0.01;
+  while ((ref.mode != ReferenceMode::kTemporal || velocity(ref.x).norm() < 1.3) && t < 5.0) {
+    ASSERT_TRUE(gen.update(referenceEstimate(t += 0.01, position(ref.x), velocity(ref.x)), ref));
+  }
+  const double speed = velocity(ref.x).norm();
+  ASSERT_NEAR(speed, 1.35, 0.05);
+  const Vec3 acceleration = trajectory::flatStateOf(ref.x, ref.u, 0.0, kDefaultGravity).acceleration;
+  ASSERT_GT(acceleration.dot(velocity(ref.x)) / speed, 3.5) << "speeding up hard";
+  gen.handleCommand(command(CommandType::kLand));
+  ASSERT_TRUE(gen.update(referenceEstimate(t += 0.01, position(ref.x), velocity(ref.x)), ref));
+  EXPECT_EQ(gen.phase(), FlightPhase::kExit);
+  EXPECT_EQ(ref.mode, ReferenceMode::kTransition);
+  const trajectory::TransitionPlan& stop = gen.transition().plan();
+  EXPECT_GT(stop.report.max_speed, 1.2 * speed) << "planned under the path's speed";
+  EXPECT_LE(stop.report.max_speed, 1.2 * 3.0);
+  while (gen.phase() == FlightPhase::kExit) {
+    ASSERT_TRUE(gen.update(referenceEstimate(t += 0.01, position(ref.x), velocity(ref.x)), ref));
+  }
+  EXPECT_EQ(gen.phase(), FlightPhase::kLanding);
 }
 
 // Negative: a path whose samples ask beyond the limits (thrust 30 > c_max 18) is refused with the

@@ -6,10 +6,14 @@
 #include <cmath>
 #include <iostream>
 
+#include "agile_vehicle.hpp"
 #include "allocation_counter.hpp"
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/math/quaternion.hpp"
 #include "sdlqr/trajectory/closed_paths.hpp"
+#include "sdlqr/trajectory/paper_cases.hpp"
+#include "sdlqr/trajectory/sampling.hpp"
+#include "sdlqr/trajectory/speed_fit.hpp"
 #include "sdlqr/trajectory/transition.hpp"
 
 namespace sdlqr::trajectory {
@@ -112,6 +116,54 @@ TEST(Transition, StopFromSpeedEndsAtRestAheadOfTheVehicle) {
   EXPECT_GT(end.position.y(), moving.position.y());
 }
 
+// GIVEN the paper's min-snap at 0.6 s, leaving its start at 1.35 m/s and accelerating at 4.3 m/s^2
+// THEN no stop keeps within 1.2 x that speed (the acceleration must turn round first, within the
+// body-rate limit, and the vehicle speeds up meanwhile) but one within the path's own 3 m/s does,
+// still within input_fraction of the limits.
+TEST(Transition, AStopWhereThePathAcceleratesHardIsPlannedUnderThePathsSpeed) {
+  const TrajectoryParams params;
+  const Trajectory minsnap = sampleTrajectory(paperMinSnapFast(params), params.sample_dt, kGravity);
+  const TrajectorySample& leaving = minsnap.samples.at(6);
+  ASSERT_NEAR(leaving.t, 0.6, 1e-9);
+  const LqrParams lqr;
+  const FlatState from = flatStateOf(leaving.x, leaving.u, 0.0, kGravity);
+  const double own_bound = 1.2 * velocity(leaving.x).norm();
+  EXPECT_FALSE(planStop(from, lqr, TransitionParams()).found) << "under the sample's own speed bound";
+  EXPECT_FALSE(stopExists(from, lqr, TransitionParams(), 0.0));
+  const TransitionPlan plan = planStop(from, lqr, TransitionParams(), peakSpeed(minsnap));
+  ASSERT_TRUE(plan.found) << describeTransition("stop", plan);
+  EXPECT_TRUE(stopExists(from, lqr, TransitionParams(), peakSpeed(minsnap)));
+  EXPECT_GT(plan.report.max_speed, own_bound) << "it needed the path's speed";
+  EXPECT_LE(plan.report.max_speed, 1.2 * 3.0);
+  EXPECT_LE(plan.report.max_body_rate, 0.8 * lqr.omega_max * (1.0 + 1e-9)) << "within input_fraction";
+}
+
+// GIVEN the agile vehicle's lemniscate at 9 m/s where it pulls 28 m/s^2 into a turn THEN the stop
+// needs more than input_fraction (80 %) of c_max: it is planned within the full 45 m/s^2, the
+// limits the path itself is checked against. Negative: a vehicle of 40 m/s^2 has none there.
+TEST(Transition, AStopFromATurnNearTheLimitsIsPlannedWithinTheFullLimits) {
+  ClosedPathSpec spec;
+  spec.shape = ClosedPathShape::kLemniscate;
+  spec.size = 3.0;
+  spec.speed = 9.0;
+  spec.center = Vec3(0.0, 0.0, 2.0);
+  const Trajectory lemniscate = sampleClosedPath(spec, kGravity);
+  const TrajectorySample& turning = lemniscate.samples.at(60);
+  LqrParams lqr = test::agileLqr(true);
+  TransitionParams params;
+  params.gentle_fraction = 0.5;  // config/agile752.yaml
+  const FlatState from = flatStateOf(turning.x, turning.u, 0.0, kGravity);
+  ASSERT_GT(from.acceleration.norm(), 26.0);
+  const TransitionPlan plan = planStop(from, lqr, params, 9.0);
+  ASSERT_TRUE(plan.found) << describeTransition("stop", plan);
+  EXPECT_EQ(plan.limits.c_max, 45.0);
+  EXPECT_GT(plan.report.max_thrust, 0.8 * 45.0) << "beyond input_fraction";
+  EXPECT_LE(plan.report.max_thrust, 45.0);
+  lqr.c_max = 40.0;
+  EXPECT_FALSE(planStop(from, lqr, params, 9.0).found);
+  EXPECT_FALSE(stopExists(from, lqr, params, 9.0));
+}
+
 // Negative: limits no duration can meet (a thrust floor above what a hover needs) find none, and
 // say so.
 TEST(Transition, NoneFoundWhenTheLimitsExcludeEveryDuration) {
@@ -142,8 +194,13 @@ TEST(Transition, PlanningAllocatesNothing) {
   const sdlqr::testing::AllocationCounter allocations;
   const TransitionPlan plan = planTransition(restAt(to.position), to, lqr, params);
   const TransitionPlan stop = planStop(to, lqr, params);
+  FlatState slow_and_accelerating = restAt(Vec3(0, 0, 1));  // every tier searched
+  slow_and_accelerating.velocity = Vec3(1.35, 0, 0);
+  slow_and_accelerating.acceleration = Vec3(4.3, 0, 0);
+  const TransitionPlan slow_stop = planStop(slow_and_accelerating, lqr, params, 3.0);
+  const bool exists = stopExists(slow_and_accelerating, lqr, params, 3.0);
   EXPECT_EQ(allocations.count(), 0);
-  EXPECT_TRUE(plan.found && stop.found);
+  EXPECT_TRUE(plan.found && stop.found && slow_stop.found && exists);
 }
 
 }  // namespace

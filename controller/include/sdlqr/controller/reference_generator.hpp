@@ -112,6 +112,7 @@ class ReferenceGenerator {
   int64_t landed_since_utime_ = -1;
   trajectory::TrajectoryTracker tracker_;
   int64_t trajectory_seq_ = -1;
+  double path_speed_ = 0.0;  // [m/s] the top speed of the last trajectory loaded (its transitions')
   int64_t guard_aborts_ = 0;
   trajectory::GuardTrip last_guard_trip_ = trajectory::GuardTrip::kNone;
   TransitionReference transition_;

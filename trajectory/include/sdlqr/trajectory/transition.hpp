@@ -20,7 +20,9 @@
 // around the reference (a transition at omega_max left the vehicle none and it diverged at 9 m/s). A transition found is flyable
 // by construction; none is found only beyond `max_duration`. Planned first within `gentle_fraction`
 // where that finds one: the shortest transition within 80 % of an agile vehicle's limits tilts 50
-// degrees in 0.2 s, which a hover LQR does not follow (docs/agility.md §5).
+// degrees in 0.2 s, which a hover LQR does not follow (docs/agility.md §5). Where neither finds one,
+// the speed bound is raised to the path's top speed, and last the full limits are used: a stop from
+// where a path accelerates hard, or turns near the limits, cannot brake at once (transition.cpp).
 //
 // Fixed-size and allocation-free: the controller plans a transition inside a tick.
 
@@ -93,11 +95,16 @@ struct TransitionPlan {
 };
 
 // The shortest flyable transition between the two states (from its start at rest in `to` for an
-// exit: `to` as given).
+// exit: `to` as given). `path_speed` [m/s]: the top speed of the path it joins or leaves; where no
+// transition is found within the speed bound of its ends, one within the path's (plus speed_margin) is
+// searched (a stop from a slow sample that accelerates hard gains speed before it can brake).
 TransitionPlan planTransition(const FlatState& from, const FlatState& to, const LqrParams& lqr,
-                              const TransitionParams& params);
-// The shortest flyable stop (Transition::stopping), heading kept.
-TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const TransitionParams& params);
+                              const TransitionParams& params, double path_speed = 0.0);
+// The shortest flyable stop (Transition::stopping), heading kept; `path_speed` as above.
+TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const TransitionParams& params,
+                        double path_speed = 0.0);
+// Whether planStop finds a stop (the first flyable duration, not the shortest: a fifth of the work).
+bool stopExists(const FlatState& from, const LqrParams& lqr, const TransitionParams& params, double path_speed);
 
 // True when `from` is within the tolerances of `to`: flying the path from there needs no entry.
 bool closeEnough(const FlatState& from, const FlatState& to, const TransitionParams& params);
