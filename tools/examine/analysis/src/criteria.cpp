@@ -259,6 +259,19 @@ std::pair<double, std::string> valueOf(const Window& w, Of of) {
   return {of(w), ""};
 }
 
+// A path the guard aborted was not flown: every check of it fails, saying so (its figures, of the
+// part flown before the abort, would pass a sweep on a path given up after a fraction of a lap).
+std::pair<double, std::string> valueOf(const PathTrackingReport& t, double (*of)(const PathTrackingReport&)) {
+  if (!t.missing.empty()) return {kNotReached, t.missing};
+  if (std::isfinite(t.aborted_at)) {
+    char why[128];
+    std::snprintf(why, sizeof why, "aborted into a hold by the guard at %.2f s, %.2f s into the path", t.aborted_at,
+                  t.aborted_at - t.start);
+    return {kNotReached, why};
+  }
+  return {of(t), ""};
+}
+
 // Appends the checks of one criterion, one per window of its scope.
 void judgeOne(const CriterionSpec& spec, double limit, const std::string& description, FlightReport& report) {
   auto add = [&](const std::string& window, std::pair<double, std::string> value) {

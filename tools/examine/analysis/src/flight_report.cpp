@@ -88,7 +88,10 @@ std::vector<PathTrackingReport> trackTrajectories(const logger::FlightLog& log, 
     }
     const PathTrackingReport* r = reportOf(tracked, log.trajectory[static_cast<size_t>(x.message)].seq, x.seen);
     if (r == nullptr) {
-      reports.push_back(untracked(x, x.describe() + ", never tracked by the controller"));
+      char aborted[96] = "";
+      const double at = trajectoryAbortTime(log, log.trajectory[static_cast<size_t>(x.message)].seq);
+      if (std::isfinite(at)) std::snprintf(aborted, sizeof aborted, " (the guard aborted its entry into a hold at %.2f s)", at);
+      reports.push_back(untracked(x, x.describe() + ", never tracked by the controller" + aborted));
       continue;
     }
     used.push_back(r);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "flight_parts.hpp"
+#include "sdlqr/analysis/trajectory_aborts.hpp"
 #include "sdlqr/trajectory/tracking.hpp"
 
 namespace sdlqr::analysis {
@@ -275,6 +276,7 @@ std::vector<PathTrackingReport> analyzePathTracking(const logger::FlightLog& log
     if (progress.t.empty()) continue;  // rejected or never tracked
 
     PathTrackingReport r = trackingWindow(log, trajectory, path, progress);
+    r.aborted_at = trajectoryAbortTime(log, trajectory.seq);
     const PathDistances path_distance = measureErrors(truth, trajectory, path, r);
     findSkippedSamples(truth, trajectory, path, progress, options, r);
     countCommands(log, options, r);

@@ -102,7 +102,7 @@ JsonDocument trajectoryJson(const PathTrackingReport& t) {
       {"tracking", t.tracking == ReferenceMode::kTemporal ? "temporal" : "spatial"}, {"closed", t.closed},
       {"samples", t.samples}, {"path_length_m", t.path_length}, {"duration_s", t.duration}, {"start_s", t.start},
       {"entry_time_s", t.entry_time}, {"end_s", t.end}, {"completed", t.completed}, {"completion_time_s", t.completion_time},
-      {"remaining_m", t.remaining}, {"laps", t.laps}, {"truth_samples", t.truth_samples},
+      {"remaining_m", t.remaining}, {"laps", t.laps}, {"aborted_at_s", t.aborted_at}, {"truth_samples", t.truth_samples},
       {"path_error_rms_m", t.path_error_rms}, {"path_error_max_m", t.path_error_max},
       {"path_error_rms_axis_m", vec3(t.path_error_rms_axis)}, {"path_error_max_axis_m", vec3(t.path_error_max_axis)},
       {"time_error_rms_m", t.time_error_rms}, {"time_error_max_m", t.time_error_max},
@@ -275,6 +275,7 @@ void writeTrajectories(const FlightReport& r, std::ostream& out) {
                               : format("not completed (%.2f m left)", t.remaining).c_str(),
                   t.laps);
     out << line;
+    if (std::isfinite(t.aborted_at)) out << format("    aborted into a hold by the guard at %.2f s\n", t.aborted_at);
     std::snprintf(line, sizeof line,
                   "    path error RMS %.3f m (x %.3f y %.3f z %.3f), max %.3f m; time-indexed RMS %.3f m, max %.3f m\n",
                   t.path_error_rms, t.path_error_rms_axis[0], t.path_error_rms_axis[1], t.path_error_rms_axis[2],

@@ -334,6 +334,43 @@ TEST(PathTrackingCriteria, ChecksFollowTheScenario) {
   EXPECT_NO_THROW(analysis::analyzeFlight(spatial.log, heldPathScenario({{"thrust_limit_violations_max", 0}}), options));
 }
 
+// A path flown exactly for 1 s, then aborted by the guard into a hold (the reference leaves it for
+// a setpoint with no new command) unless `aborted` is false, where it is flown to its end (and the
+// reference stays on its last sample, as the controller's does).
+logger::FlightLog flyGivenUpAfterOneSecond(bool aborted) {
+  logger::FlightLog log;
+  addTrajectory(log, makeTrajectory(lPath, 4.0, 0.1, ReferenceMode::kSpatial));
+  for (int i = 0; i <= 500; ++i) {
+    const double tau = i * 0.01;
+    const bool holding = aborted && tau > 1.0;
+    addTruth(log, 10.0 + tau, lPath(std::min(tau, holding ? 1.0 : 4.0)));
+    if (holding) addReference(log, 10.0 + tau, 0, 0.0, ReferenceMode::kSetpoint, -1);  // the hold
+    else referenceAt(log, 10.0 + tau, std::min(tau, 4.0), 41, ReferenceMode::kSpatial);
+  }
+  return log;
+}
+
+// The guard gave the path up after 1 s of its 4: the error of the second it flew (none) must not
+// pass its checks. Every check of the path fails, naming the abort; flown to its end, they pass.
+TEST(PathTrackingCriteria, APathTheGuardAbortedFailsItsChecksSayingSo) {
+  const std::map<std::string, double> criteria = {{"path_error_rms", 0.1}, {"path_error_max", 0.3}};
+  const auto aborted = analysis::analyzeFlight(flyGivenUpAfterOneSecond(true), heldPathScenario(criteria));
+  ASSERT_EQ(aborted.trajectories.size(), 1u);
+  EXPECT_NEAR(aborted.trajectories[0].aborted_at, 11.01, 1e-9);
+  EXPECT_LT(aborted.trajectories[0].path_error_max, 1e-9) << "the part flown was flown exactly";
+  EXPECT_FALSE(aborted.passed());
+  for (const char* name : {"path_error_rms[held]", "path_error_max[held]"}) {
+    const analysis::Check* check = nullptr;
+    for (const auto& c : aborted.checks) check = c.name == name ? &c : check;
+    ASSERT_NE(check, nullptr) << name;
+    EXPECT_FALSE(check->pass) << name;
+    EXPECT_EQ(check->note, "aborted into a hold by the guard at 11.01 s, 1.01 s into the path") << name;
+  }
+  const auto flown = analysis::analyzeFlight(flyGivenUpAfterOneSecond(false), heldPathScenario(criteria));
+  EXPECT_TRUE(std::isnan(flown.trajectories[0].aborted_at));
+  EXPECT_TRUE(flown.passed());
+}
+
 // A repeating mission (the soak's: a lap every 33 s) is judged lap by lap, each by its own event:
 // a lap flown 20 cm off its path fails by its name, the good one beside it passes.
 TEST(PathTrackingCriteria, EveryLapOfARepeatingMissionIsJudgedAndABadOneFailsByName) {

@@ -257,5 +257,27 @@ TEST(Agility, AGentleEntryLetsTheHoverLqrFlyTheAgileCircle) {
   EXPECT_GT(f.report.max_tilt_deg, 80.0);
 }
 
+// GIVEN the hover LQR on the agile vehicle's 3 m circle at 8 m/s (seed 21) THEN the guard aborts the
+// circle shortly after the entry hands over (tilt), and the path's checks fail on the abort: the
+// speed sweep counted this flight within its path criteria, judged on the part flown before the
+// abort, and had the hover K fly the circle faster than sdlqr (9 against 8 m/s).
+TEST(Agility, ACircleTheGuardAbortedFailsItsPathChecks) {
+  const mission::Scenario s = agileCircleAt(8.0);
+  const AgileFlight f = flyWith(s, withLaw(s, ControlLaw::kHoverLqr));
+  ASSERT_EQ(f.report.trajectories.size(), 1u);
+  const analysis::PathTrackingReport& circle = f.report.trajectories[0];
+  std::cout << "aborted at " << circle.aborted_at << " s (" << trajectory::toString(f.trip) << "), path error of the "
+            << circle.end - circle.start << " s flown: RMS " << circle.path_error_rms << " m\n";
+  EXPECT_EQ(f.guard_aborts, 1);
+  EXPECT_EQ(f.trip, trajectory::GuardTrip::kTilt);
+  EXPECT_LT(circle.path_error_rms, 0.30) << "within the criterion, for the part flown";
+  for (const char* key : {"path_error_rms", "path_error_max"}) {
+    const analysis::Check* check = checkWithKey(f.report, key);
+    ASSERT_NE(check, nullptr) << key;
+    EXPECT_FALSE(check->pass) << check->name;
+    EXPECT_EQ(check->note.rfind("aborted into a hold by the guard at ", 0), 0u) << check->note;
+  }
+}
+
 }  // namespace
 }  // namespace sdlqr

@@ -99,6 +99,9 @@ struct PathTrackingReport {
   double completion_time = std::numeric_limits<double>::quiet_NaN();  // [s] after start
   double remaining = 0.0;            // [m] of path the reference had left at the window end (open)
   double laps = 0.0;                 // [-] reference progress over one lap's length
+  double aborted_at = std::numeric_limits<double>::quiet_NaN();  // [s] the guard aborted the path
+                                     // into a hold (NaN: it did not): the figures are of the part
+                                     // flown, and every check of the path fails
 
   int64_t truth_samples = 0;
   double path_error_rms = 0.0;       // [m] distance to the closest point of the path

@@ -12,4 +12,8 @@ namespace sdlqr::analysis {
 
 int64_t countTrajectoryAborts(const logger::FlightLog& log);
 
+// [s] simulation time the guard aborted the trajectory of `seq` into a hold (during its entry or
+// along it); NaN when it did not.
+double trajectoryAbortTime(const logger::FlightLog& log, int64_t seq);
+
 }  // namespace sdlqr::analysis
