@@ -1,6 +1,7 @@
 #pragma once
 // The agile vehicle of the tests (config/agile752.yaml): its lqr limits and rotor drag, the drag in
-// the controllers' model or not (lqr.model_rotor_drag), and its benchmark's 3 m circle at a speed.
+// the controllers' model or not (lqr.model_rotor_drag), and its benchmarks' 3 m circle and figure
+// eight at a speed.
 
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/trajectory/closed_paths.hpp"
@@ -24,6 +25,17 @@ inline Trajectory agileCircle(double speed) {
   circle.speed = speed;
   circle.center = Vec3(0.0, 0.0, 2.0);
   return trajectory::sampleClosedPath(circle, kDefaultGravity);
+}
+
+// Its figure eight (config/compare/agile_lemniscate_sweep.yaml): 3 m half-width, level at 2 m,
+// centred on the origin, at peak `speed` [m/s].
+inline Trajectory agileLemniscate(double speed) {
+  trajectory::ClosedPathSpec lemniscate;
+  lemniscate.shape = trajectory::ClosedPathShape::kLemniscate;
+  lemniscate.size = 3.0;
+  lemniscate.speed = speed;
+  lemniscate.center = Vec3(0.0, 0.0, 2.0);
+  return trajectory::sampleClosedPath(lemniscate, kDefaultGravity);
 }
 
 }  // namespace sdlqr::test

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include "agile_vehicle.hpp"
-#include "sdlqr/trajectory/closed_paths.hpp"
 #include "sdlqr/trajectory/paper_cases.hpp"
 #include "sdlqr/trajectory/path_check.hpp"
 #include "sdlqr/trajectory/sampling.hpp"
@@ -42,12 +41,7 @@ TEST(PathCheck, AStopIsFoundFromEveryMovingSampleOfThePapersMinSnap) {
 // limits (39.4 m/s^2 at the most) and a stop from its fastest sample exists, which is all the check
 // used to look at; from 11 samples pulling hard into its turns there is none. Refused, saying where.
 TEST(PathCheck, APathWithNoStopFromSomeSampleIsRefusedThoughItsFastestHasOne) {
-  ClosedPathSpec spec;
-  spec.shape = ClosedPathShape::kLemniscate;
-  spec.size = 3.0;
-  spec.speed = 9.0;
-  spec.center = Vec3(0.0, 0.0, 2.0);
-  const Trajectory lemniscate = sampleClosedPath(spec, kDefaultGravity);
+  const Trajectory lemniscate = test::agileLemniscate(9.0);
   LqrParams lqr = test::agileLqr(true);
   lqr.c_max = 40.0;
   TransitionParams transition;

@@ -142,12 +142,7 @@ TEST(Transition, AStopWhereThePathAcceleratesHardIsPlannedUnderThePathsSpeed) {
 // needs more than input_fraction (80 %) of c_max: it is planned within the full 45 m/s^2, the
 // limits the path itself is checked against. Negative: a vehicle of 40 m/s^2 has none there.
 TEST(Transition, AStopFromATurnNearTheLimitsIsPlannedWithinTheFullLimits) {
-  ClosedPathSpec spec;
-  spec.shape = ClosedPathShape::kLemniscate;
-  spec.size = 3.0;
-  spec.speed = 9.0;
-  spec.center = Vec3(0.0, 0.0, 2.0);
-  const Trajectory lemniscate = sampleClosedPath(spec, kGravity);
+  const Trajectory lemniscate = test::agileLemniscate(9.0);
   const TrajectorySample& turning = lemniscate.samples.at(60);
   LqrParams lqr = test::agileLqr(true);
   TransitionParams params;
