@@ -41,7 +41,7 @@ void ReferenceGenerator::beginEntry(const StateEstimate& estimate, double now_s)
   from.jerk.setZero();
   const trajectory::FlatState to = trajectory::flatStateAtStart(tracker_.trajectory(), gravity_);
   if (trajectory::closeEnough(from, to, params_.transition)) return;
-  if (transition_.start(from, &to, now_s, path_speed_)) {
+  if (transition_.start(from, &to, now_s, path_speed_, trajectory::TransitionKind::kEntry)) {
     entering_ = true;
     ++transitions_;
     return;
@@ -68,7 +68,10 @@ bool ReferenceGenerator::beginExit(const Vec3* hold_at, double yaw, FlightPhase 
     to.position = *hold_at;
     to.yaw = yaw;
   }
-  if (!transition_.start(from, hold_at ? &to : nullptr, secondsOf(last_utime_), path_speed_)) return false;
+  if (!transition_.start(from, hold_at ? &to : nullptr, secondsOf(last_utime_), path_speed_,
+                         trajectory::TransitionKind::kExit)) {
+    return false;
+  }
   ++transitions_;
   tracker_.clear();
   entering_ = false;

@@ -3,8 +3,8 @@
 namespace sdlqr::controller {
 
 bool TransitionReference::start(const trajectory::FlatState& from, const trajectory::FlatState* to, double start_s,
-                                double path_speed) {
-  const trajectory::TransitionPlan plan = to ? trajectory::planTransition(from, *to, lqr_, params_, path_speed)
+                                double path_speed, trajectory::TransitionKind kind) {
+  const trajectory::TransitionPlan plan = to ? trajectory::planTransition(from, *to, lqr_, params_, path_speed, kind)
                                              : trajectory::planStop(from, lqr_, params_, path_speed);
   if (!plan.found) return false;
   plan_ = plan;

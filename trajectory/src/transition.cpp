@@ -259,12 +259,13 @@ TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const L
 // under the speed bound of the transition's ends. Where those find none: under the top speed of the
 // path it joins or leaves (a stop from a slow sample where the path accelerates hard gains speed
 // while its acceleration turns round: the paper's min-snap leaving a corner at 0.6 m/s and 3.5
-// m/s^2), and last within the full limits the path itself was checked against (a stop from a sharp
-// turn flown near them: the agile lemniscate at 9 m/s, 28 m/s^2 into the turn, needs 40 of 45 m/s^2).
-// A tier whose limits are an earlier one's is not searched again; none found: the widest's report.
+// m/s^2), and, for an exit, last within the full limits the path itself was checked against (a stop
+// from a sharp turn flown near them: the agile lemniscate at 9 m/s, 28 m/s^2 into the turn, needs 40
+// of 45 m/s^2). A tier whose limits are an earlier one's is not searched again; none found: the
+// widest's report.
 template <class Make>
 TransitionPlan preferredFirst(const Make& make, const FlatState& from, const FlatState& to, const LqrParams& lqr,
-                              const TransitionParams& params, double path_speed) {
+                              const TransitionParams& params, double path_speed, TransitionKind kind) {
   struct Tier {
     double fraction;
     double speed_floor;
@@ -272,10 +273,12 @@ TransitionPlan preferredFirst(const Make& make, const FlatState& from, const Fla
   const double gentle = std::min(params.gentle_fraction, params.input_fraction);
   const Tier tiers[] = {{gentle, 0.0}, {params.input_fraction, 0.0},  // the ends' speed
                         {gentle, path_speed}, {params.input_fraction, path_speed}, {1.0, path_speed}};
+  const size_t searched = kind == TransitionKind::kExit ? std::size(tiers) : std::size(tiers) - 1;
   TransitionPlan plan;
   FeasibilityLimits tried[std::size(tiers)];
   int tried_count = 0;
-  for (const Tier& tier : tiers) {
+  for (size_t i = 0; i < searched; ++i) {
+    const Tier& tier = tiers[i];
     const FeasibilityLimits limits = transitionLimits(from, to, lqr, params, tier.fraction, tier.speed_floor);
     const auto same = [&](const FeasibilityLimits& l) {
       return l.omega_max == limits.omega_max && l.c_max == limits.c_max && l.v_max == limits.v_max;
@@ -291,14 +294,16 @@ TransitionPlan preferredFirst(const Make& make, const FlatState& from, const Fla
 }  // namespace
 
 TransitionPlan planTransition(const FlatState& from, const FlatState& to, const LqrParams& lqr,
-                              const TransitionParams& params, double path_speed) {
-  return preferredFirst([&](double T) { return Transition::between(from, to, T); }, from, to, lqr, params, path_speed);
+                              const TransitionParams& params, double path_speed, TransitionKind kind) {
+  return preferredFirst([&](double T) { return Transition::between(from, to, T); }, from, to, lqr, params, path_speed,
+                        kind);
 }
 
 TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const TransitionParams& params,
                         double path_speed) {
   const FlatState rest{from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw};
-  return preferredFirst([&](double T) { return Transition::stopping(from, T); }, from, rest, lqr, params, path_speed);
+  return preferredFirst([&](double T) { return Transition::stopping(from, T); }, from, rest, lqr, params, path_speed,
+                        TransitionKind::kExit);
 }
 
 // Only the last tier's search: each tier's limits contain the ones before, and every search tries

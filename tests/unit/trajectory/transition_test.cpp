@@ -159,6 +159,24 @@ TEST(Transition, AStopFromATurnNearTheLimitsIsPlannedWithinTheFullLimits) {
   EXPECT_FALSE(stopExists(from, lqr, params, 9.0));
 }
 
+// GIVEN a hover at the start of the agile lemniscate at 9.5 m/s THEN no entry is found within 80 %
+// of the limits, and none is planned at the full limits either (an entry that finds none is refused
+// and the vehicle holds: an entry flown at the limits leaves the feedback no room); the same motion
+// as an exit, whose alternative is a jump, is planned within the full limits.
+TEST(Transition, AnEntryIsNeverPlannedAtTheFullLimitsAnExitIs) {
+  const Trajectory lemniscate = test::agileLemniscate(9.5);
+  const FlatState start = flatStateAtStart(lemniscate, kGravity);
+  TransitionParams params;
+  params.gentle_fraction = 0.5;  // config/agile752.yaml
+  const LqrParams lqr = test::agileLqr(true);
+  const TransitionPlan entry = planTransition(restAt(start.position), start, lqr, params, 9.5, TransitionKind::kEntry);
+  EXPECT_FALSE(entry.found) << describeTransition("entry", entry);
+  const TransitionPlan exit = planTransition(restAt(start.position), start, lqr, params, 9.5, TransitionKind::kExit);
+  ASSERT_TRUE(exit.found);
+  EXPECT_EQ(exit.limits.c_max, lqr.c_max);
+  EXPECT_GT(exit.report.max_thrust, 0.8 * lqr.c_max) << "it needed more than input_fraction";
+}
+
 // Negative: limits no duration can meet (a thrust floor above what a hover needs) find none, and
 // say so.
 TEST(Transition, NoneFoundWhenTheLimitsExcludeEveryDuration) {

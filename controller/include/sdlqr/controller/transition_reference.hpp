@@ -18,9 +18,10 @@ class TransitionReference {
   const trajectory::TransitionParams& params() const { return params_; }
 
   // Plans from `from` to `to` (nullptr: a stop, at rest ahead of `from`), flown from `start_s` [s]
-  // of simulation time; `path_speed` [m/s] the top speed of the path joined or left (planTransition).
-  // False when none is found within max_duration (nothing changes then).
-  bool start(const trajectory::FlatState& from, const trajectory::FlatState* to, double start_s, double path_speed);
+  // of simulation time; `path_speed` [m/s] the top speed of the path joined or left, `kind` which
+  // (planTransition). False when none is found within max_duration (nothing changes then).
+  bool start(const trajectory::FlatState& from, const trajectory::FlatState* to, double start_s, double path_speed,
+             trajectory::TransitionKind kind);
   bool finished(double now_s) const { return now_s - start_s_ >= plan_.transition.duration(); }
   // The reference state and feed-forward input at `now_s` (the flat map of the polynomial).
   void reference(double now_s, State& x, Input& u) const;

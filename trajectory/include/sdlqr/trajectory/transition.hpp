@@ -21,8 +21,9 @@
 // by construction; none is found only beyond `max_duration`. Planned first within `gentle_fraction`
 // where that finds one: the shortest transition within 80 % of an agile vehicle's limits tilts 50
 // degrees in 0.2 s, which a hover LQR does not follow (docs/agility.md §5). Where neither finds one,
-// the speed bound is raised to the path's top speed, and last the full limits are used: a stop from
-// where a path accelerates hard, or turns near the limits, cannot brake at once (transition.cpp).
+// the speed bound is raised to the path's top speed, and, for an exit, last the full limits are
+// used: a stop from where a path accelerates hard, or turns near the limits, cannot brake at once
+// (transition.cpp).
 //
 // Fixed-size and allocation-free: the controller plans a transition inside a tick.
 
@@ -94,13 +95,19 @@ struct TransitionPlan {
   FeasibilityLimits limits;      // it was judged against
 };
 
+// What a transition is for. An entry that finds none is refused (the vehicle holds where it is: a
+// transition at the full limits leaves the feedback no room, and an entry planned so diverged at
+// 9 m/s); an exit that finds none leaves the reference to jump, so it is searched last within them.
+enum class TransitionKind { kEntry, kExit };
+
 // The shortest flyable transition between the two states (from its start at rest in `to` for an
 // exit: `to` as given). `path_speed` [m/s]: the top speed of the path it joins or leaves; where no
 // transition is found within the speed bound of its ends, one within the path's (plus speed_margin) is
 // searched (a stop from a slow sample that accelerates hard gains speed before it can brake).
 TransitionPlan planTransition(const FlatState& from, const FlatState& to, const LqrParams& lqr,
-                              const TransitionParams& params, double path_speed = 0.0);
-// The shortest flyable stop (Transition::stopping), heading kept; `path_speed` as above.
+                              const TransitionParams& params, double path_speed = 0.0,
+                              TransitionKind kind = TransitionKind::kEntry);
+// The shortest flyable stop (Transition::stopping), heading kept, an exit; `path_speed` as above.
 TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const TransitionParams& params,
                         double path_speed = 0.0);
 // Whether planStop finds a stop (the first flyable duration, not the shortest: a fifth of the work).
