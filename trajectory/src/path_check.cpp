@@ -33,11 +33,12 @@ void checkExits(PathCheck& check, const Trajectory& path, double path_speed, con
   check.exit = planStop(flatStateAt(path.samples[fastest], lqr.gravity), lqr, transition, path_speed);
   check.exit_from_t = path.samples[fastest].t;
   if (!check.samples.feasible()) return;
+  double duration_hint = 0.0;  // a stop's duration from the sample before: mostly flyable from the next
   for (const TrajectorySample& sample : path.samples) {
     if (velocity(sample.x).norm() <= transition.velocity_tolerance) continue;
     ++check.exits_checked;
     const FlatState from = flatStateAt(sample, lqr.gravity);
-    if (stopExists(from, lqr, transition, path_speed)) continue;
+    if (stopExists(from, lqr, transition, path_speed, duration_hint)) continue;
     if (check.exits_missing++ == 0) {
       check.exit = planStop(from, lqr, transition, path_speed);  // its report, for the refusal
       check.exit_from_t = sample.t;

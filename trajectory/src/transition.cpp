@@ -308,10 +308,20 @@ TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const Trans
 
 // Only the last tier's search: each tier's limits contain the ones before, and every search tries
 // the same durations, so where an earlier tier finds a stop the last finds one too.
-bool stopExists(const FlatState& from, const LqrParams& lqr, const TransitionParams& params, double path_speed) {
+bool stopExists(const FlatState& from, const LqrParams& lqr, const TransitionParams& params, double path_speed,
+                double& duration_hint) {
   const FlatState rest{from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw};
   const FeasibilityLimits widest = transitionLimits(from, rest, lqr, params, 1.0, path_speed);
-  return search([&](double T) { return Transition::stopping(from, T); }, widest, lqr, params, Want::kExistence).found;
+  const auto make = [&](double T) { return Transition::stopping(from, T); };
+  if (duration_hint > 0.0 && withinLimits(make(duration_hint), widest, lqr.gravity)) return true;
+  const TransitionPlan plan = search(make, widest, lqr, params, Want::kExistence);
+  if (plan.found) duration_hint = plan.transition.duration();
+  return plan.found;
+}
+
+bool stopExists(const FlatState& from, const LqrParams& lqr, const TransitionParams& params, double path_speed) {
+  double no_hint = 0.0;
+  return stopExists(from, lqr, params, path_speed, no_hint);
 }
 
 bool closeEnough(const FlatState& from, const FlatState& to, const TransitionParams& params) {

@@ -177,6 +177,27 @@ TEST(Transition, AnEntryIsNeverPlannedAtTheFullLimitsAnExitIs) {
   EXPECT_GT(exit.report.max_thrust, 0.8 * lqr.c_max) << "it needed more than input_fraction";
 }
 
+// The check's hint (the stop's duration from the sample before, tried first) changes how much is
+// computed, never the answer: over the agile lemniscate at 9 m/s on a 40 m/s^2 vehicle, where some
+// samples have a stop and some have none, hinted and unhinted agree at every sample.
+TEST(Transition, AStopExistsWithTheHintWhereItDoesWithout) {
+  const Trajectory lemniscate = test::agileLemniscate(9.0);
+  LqrParams lqr = test::agileLqr(true);
+  lqr.c_max = 40.0;
+  TransitionParams params;
+  params.gentle_fraction = 0.5;
+  double hint = 0.0;
+  int with_stop = 0, without = 0;
+  for (const TrajectorySample& sample : lemniscate.samples) {
+    const FlatState from = flatStateOf(sample.x, sample.u, 0.0, kGravity);
+    const bool exists = stopExists(from, lqr, params, 9.0);
+    EXPECT_EQ(stopExists(from, lqr, params, 9.0, hint), exists) << "t = " << sample.t;
+    (exists ? with_stop : without) += 1;
+  }
+  EXPECT_GT(with_stop, 100);
+  EXPECT_EQ(without, 11);
+}
+
 // Negative: limits no duration can meet (a thrust floor above what a hover needs) find none, and
 // say so.
 TEST(Transition, NoneFoundWhenTheLimitsExcludeEveryDuration) {
