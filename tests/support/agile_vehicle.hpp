@@ -5,6 +5,7 @@
 
 #include "sdlqr/math/lqr_params.hpp"
 #include "sdlqr/trajectory/closed_paths.hpp"
+#include "sdlqr/trajectory/transition.hpp"
 
 namespace sdlqr::test {
 
@@ -16,6 +17,13 @@ inline LqrParams agileLqr(bool drag_modelled) {
   lqr.vehicle_rotor_drag = Vec3(0.69, 0.69, 1.34);
   lqr.model_rotor_drag = drag_modelled;
   return lqr;
+}
+
+// Its transitions (controller.transition): planned first within half the limits.
+inline trajectory::TransitionParams agileTransitions() {
+  trajectory::TransitionParams params;
+  params.gentle_fraction = 0.5;
+  return params;
 }
 
 // 3 m radius, level at 2 m, centred on the origin, at `speed` [m/s].

@@ -44,8 +44,7 @@ TEST(PathCheck, APathWithNoStopFromSomeSampleIsRefusedThoughItsFastestHasOne) {
   const Trajectory lemniscate = test::agileLemniscate(9.0);
   LqrParams lqr = test::agileLqr(true);
   lqr.c_max = 40.0;
-  TransitionParams transition;
-  transition.gentle_fraction = 0.5;
+  const TransitionParams transition = test::agileTransitions();
   const PathCheck check = checkPath(lemniscate, FeasibilityLimits::from(lqr, 9.1, 0.5), Vec3(0, 0, 2), 0.0, lqr,
                                     transition);
   EXPECT_TRUE(check.samples.feasible());

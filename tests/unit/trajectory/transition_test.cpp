@@ -145,8 +145,7 @@ TEST(Transition, AStopFromATurnNearTheLimitsIsPlannedWithinTheFullLimits) {
   const Trajectory lemniscate = test::agileLemniscate(9.0);
   const TrajectorySample& turning = lemniscate.samples.at(60);
   LqrParams lqr = test::agileLqr(true);
-  TransitionParams params;
-  params.gentle_fraction = 0.5;  // config/agile752.yaml
+  const TransitionParams params = test::agileTransitions();
   const FlatState from = flatStateOf(turning.x, turning.u, 0.0, kGravity);
   ASSERT_GT(from.acceleration.norm(), 26.0);
   const TransitionPlan plan = planStop(from, lqr, params, 9.0);
@@ -166,8 +165,7 @@ TEST(Transition, AStopFromATurnNearTheLimitsIsPlannedWithinTheFullLimits) {
 TEST(Transition, AnEntryIsNeverPlannedAtTheFullLimitsAnExitIs) {
   const Trajectory lemniscate = test::agileLemniscate(9.5);
   const FlatState start = flatStateAtStart(lemniscate, kGravity);
-  TransitionParams params;
-  params.gentle_fraction = 0.5;  // config/agile752.yaml
+  const TransitionParams params = test::agileTransitions();
   const LqrParams lqr = test::agileLqr(true);
   const TransitionPlan entry = planTransition(restAt(start.position), start, lqr, params, 9.5, TransitionKind::kEntry);
   EXPECT_FALSE(entry.found) << describeTransition("entry", entry);
@@ -184,8 +182,7 @@ TEST(Transition, AStopExistsWithTheHintWhereItDoesWithout) {
   const Trajectory lemniscate = test::agileLemniscate(9.0);
   LqrParams lqr = test::agileLqr(true);
   lqr.c_max = 40.0;
-  TransitionParams params;
-  params.gentle_fraction = 0.5;
+  const TransitionParams params = test::agileTransitions();
   double hint = 0.0;
   int with_stop = 0, without = 0;
   for (const TrajectorySample& sample : lemniscate.samples) {
