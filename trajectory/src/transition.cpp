@@ -263,6 +263,10 @@ TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const L
 // from a sharp turn flown near them: the agile lemniscate at 9 m/s, 28 m/s^2 into the turn, needs 40
 // of 45 m/s^2). A tier whose limits are an earlier one's is not searched again; none found: the
 // widest's report.
+// Where a stop's limits are judged at its end: at rest where it starts, heading kept (its end
+// position is free; only the speed and the inputs at rest matter to the limits).
+FlatState restAt(const FlatState& from) { return {from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw}; }
+
 template <class Make>
 TransitionPlan preferredFirst(const Make& make, const FlatState& from, const FlatState& to, const LqrParams& lqr,
                               const TransitionParams& params, double path_speed, TransitionKind kind) {
@@ -301,7 +305,7 @@ TransitionPlan planTransition(const FlatState& from, const FlatState& to, const 
 
 TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const TransitionParams& params,
                         double path_speed) {
-  const FlatState rest{from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw};
+  const FlatState rest = restAt(from);
   return preferredFirst([&](double T) { return Transition::stopping(from, T); }, from, rest, lqr, params, path_speed,
                         TransitionKind::kExit);
 }
@@ -310,7 +314,7 @@ TransitionPlan planStop(const FlatState& from, const LqrParams& lqr, const Trans
 // the same durations, so where an earlier tier finds a stop the last finds one too.
 bool stopExists(const FlatState& from, const LqrParams& lqr, const TransitionParams& params, double path_speed,
                 double& duration_hint) {
-  const FlatState rest{from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw};
+  const FlatState rest = restAt(from);
   const FeasibilityLimits widest = transitionLimits(from, rest, lqr, params, 1.0, path_speed);
   const auto make = [&](double T) { return Transition::stopping(from, T); };
   if (duration_hint > 0.0 && withinLimits(make(duration_hint), widest, lqr.gravity)) return true;

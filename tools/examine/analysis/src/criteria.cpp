@@ -262,14 +262,13 @@ std::pair<double, std::string> valueOf(const Window& w, Of of) {
 // A path the guard aborted was not flown: every check of it fails, saying so (its figures, of the
 // part flown before the abort, would pass a sweep on a path given up after a fraction of a lap).
 std::pair<double, std::string> valueOf(const PathTrackingReport& t, double (*of)(const PathTrackingReport&)) {
-  if (!t.missing.empty()) return {kNotReached, t.missing};
-  if (std::isfinite(t.aborted_at)) {
+  if (t.missing.empty() && std::isfinite(t.aborted_at)) {
     char why[128];
     std::snprintf(why, sizeof why, "aborted into a hold by the guard at %.2f s, %.2f s into the path", t.aborted_at,
                   t.aborted_at - t.start);
     return {kNotReached, why};
   }
-  return {of(t), ""};
+  return valueOf<PathTrackingReport>(t, of);  // the windows' rule: figures, or why there are none
 }
 
 // Appends the checks of one criterion, one per window of its scope.
