@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
     addProcessOptions(parser, &options);
     mission::addMissionOptions(parser, &mission_options, &describe_only, &positional);
     parser.parseOrExit(argc, argv);
-    const mission::Scenario scenario = mission::loadScenarioArgument(positional, mission_options);
+    const mission::Scenario scenario = mission::loadScenarioArgument(positional);
     const std::string vehicle_path = options.config_path.empty() ? scenario.vehicle_path : options.config_path;
     const ConfigReader vehicle = loadVehicleConfig(vehicle_path);
     const auto trajectory_params = trajectory::TrajectoryParams::load(vehicle.child("trajectory"));

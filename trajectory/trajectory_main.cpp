@@ -55,8 +55,8 @@ Options parseOptions(int argc, const char* const* argv) {
   parser.addOption("--config", &o.config_path, "FILE", "vehicle file: lqr limits and the trajectory section");
   parser.addOption("--output", &o.output_path, "FILE", "write the sampled trajectory as CSV ('-': stdout)");
   parser.addOption("--check", &o.check_path, "FILE", "validate a trajectory CSV and report its feasibility");
-  parser.addOption("--v-max", &o.v_max, "M_PER_S", "top speed for a waypoint file (overrides its v_max)");
-  parser.addOption("--dt", &o.dt, "SECONDS", "sample spacing (default trajectory.sample_dt, 0.1 s)");
+  parser.addOption("--v-max", &o.v_max, "M_PER_S", "top speed for a waypoint file (overrides its v_max)", Range::above(0));
+  parser.addOption("--dt", &o.dt, "SECONDS", "sample spacing (default trajectory.sample_dt, 0.1 s)", Range::above(0));
   parser.addFlag("--periodic", &o.periodic, "min-snap: one closed periodic lap instead of rest to rest");
   parser.addFlag("--temporal", &o.temporal, "mark the trajectory for temporal tracking (default spatial)");
   parser.addFlag("--require-feasible", &o.require_feasible, "exit 3 when a limit is violated");
@@ -92,7 +92,6 @@ Sections loadSections(const Options& o) {
   }
   if (o.periodic) s.params.periodic = true;
   if (!std::isnan(o.dt)) {
-    if (!(o.dt > 0.0)) throw std::invalid_argument("--dt: must be > 0");
     s.params.sample_dt = o.dt;
     if (s.params.check_dt > o.dt) s.params.check_dt = o.dt;
   }
@@ -179,7 +178,6 @@ int run(int argc, const char* const* argv) {
                        {printedSection("lqr", sections.lqr), printedSection("trajectory", sections.params)});
     return 0;
   }
-  if (!std::isnan(o.v_max) && !(o.v_max > 0.0)) throw std::invalid_argument("--v-max: must be > 0");
   Generated generated = generate(o, sections);
   if (o.temporal) generated.trajectory.tracking = ReferenceMode::kTemporal;
   writeOutputs(o, generated);

@@ -66,7 +66,8 @@ int runExportCommand(int argc, const char* const* argv) {
   parser.allowPositional(&positional, "LOG");
   parser.addOption("--out", &out, "DIR", "CSV and metrics output folder (created if missing)");
   parser.addOption("--mcap", &mcap, "FILE", "MCAP file to write (chunked, indexed, CRCs; docs/view.md)");
-  parser.addOption("--rate-cmd-period", &period_s, "S", "nominal RATE_CMD period for the jitter figures (default 0.01)");
+  parser.addOption("--rate-cmd-period", &period_s, "S", "nominal RATE_CMD period for the jitter figures (default 0.01)",
+                   sdlqr::Range::above(0));
   parser.setEpilog(
       "A log whose last event is cut short (recorder killed) is exported up to that event, with a warning\n"
       "naming the bytes dropped.\n\n"
@@ -74,7 +75,6 @@ int runExportCommand(int argc, const char* const* argv) {
   parser.parseOrExit(argc, argv);
   if (positional.size() != 1) throw std::invalid_argument("export needs exactly one LOG (see export --help)");
   if (out.empty() && mcap.empty()) throw std::invalid_argument("export needs --out DIR and/or --mcap FILE");
-  if (!(period_s > 0.0)) throw std::invalid_argument("--rate-cmd-period must be > 0");
 
   const auto progress = [](int percent, int64_t events) {
     std::cerr << kLoggerProgram << " export: " << percent << "% (" << events << " events)" << std::endl;

@@ -71,7 +71,8 @@ RecordCommand parseRecordCommand(int argc, const char* const* argv) {
   parser.addOption("--scenario", &scenario, "NAME", "scenario part of the file name (default: flight)");
   parser.addOption("--channels", &channels, "REGEX",
                    "channels to record, LCM regex on the full name (default: all; with --vehicle, PREFIX/.*)");
-  parser.addOption("--duration", &duration_s, "S", "stop after S seconds of wall time (default: until a signal)");
+  parser.addOption("--duration", &duration_s, "S", "stop after S seconds of wall time (default: until a signal)",
+                   sdlqr::Range::atLeast(0));
   sdlqr::addLcmUrlOption(parser, &process.lcm_url);
   parser.addOption("--vehicle", &process.vehicle, "PREFIX", "vehicle to record; also prefixes this logger's HEARTBEAT");
   sdlqr::addBusLayoutOption(parser, &process);
@@ -79,7 +80,6 @@ RecordCommand parseRecordCommand(int argc, const char* const* argv) {
       "Other mode: sdlqr-logger export LOG --out DIR   (CSV per channel + metrics.json; see export --help)\n\n"
       "exit codes: 0 recorded, 1 write errors or fatal error, 2 bad arguments or the file exists");
   parser.parseOrExit(argc, argv);
-  if (duration_s < 0.0) throw std::invalid_argument("--duration must be >= 0");
   command.pattern = !channels.empty() ? channels : (process.vehicle.empty() ? ".*" : process.vehicle + "/.*");
   checkChannelRegex(command.pattern);
   command.recorder.path = logPath(out, dir, scenario);

@@ -11,17 +11,15 @@ void addMissionOptions(ArgParser& parser, MissionOptions* options, bool* describ
                    "give up (exit 1) when no SIM_CLOCK arrives for this many wall seconds (default 10)");
   parser.addOption("--resend-interval", &options->resend_interval_s, "S",
                    "re-send the current command and pull S/10 s of simulation time after they are sent, then\n"
-                   "every S s, for a restarted process and a lost datagram (default 1, 0: never)");
+                   "every S s, for a restarted process and a lost datagram (default 1, 0: never)",
+                   Range::closed(0, 60));
   parser.addFlag("--describe", describe_only,
                  "validate the scenario, print name, vehicle, seed, rate and duration as key=value lines, exit");
   parser.allowPositional(positional, "SCENARIO.yaml");
 }
 
-Scenario loadScenarioArgument(const std::vector<std::string>& positional, const MissionOptions& options) {
+Scenario loadScenarioArgument(const std::vector<std::string>& positional) {
   if (positional.size() != 1) throw std::invalid_argument("expected one scenario file (see --help)");
-  if (!(options.resend_interval_s >= 0.0 && options.resend_interval_s <= 60.0)) {
-    throw std::invalid_argument("--resend-interval: must be in [0, 60] s");
-  }
   return Scenario::load(positional[0]);
 }
 

@@ -17,15 +17,13 @@ void addProcessAndLinkOptions(ArgParser& parser, ProcessOptions* process, LinkOp
   parser.addOption("--mavlink-key", &o->key_path, "FILE",
                    "sign every frame and accept only frames signed with this key (64 hex digits, mode 0600; "
                    "default: $SDLQR_MAVLINK_KEY, else an unsigned link)");
-  parser.addOption("--link-id", &o->link_id, "N", "MAVLink signing link id, 0-255 (default 0)");
+  parser.addOption("--link-id", &o->link_id, "N", "MAVLink signing link id (default 0)", Range::closed(0, 255));
 }
 
-// Parses the command line of a process on a MAVLink link (their exit codes are the same) and checks
-// the link's options.
-void parseLinkCommandLine(ArgParser& parser, const LinkOptions& o, int argc, const char* const* argv) {
+// Parses the command line of a process on a MAVLink link (their exit codes are the same).
+void parseLinkCommandLine(ArgParser& parser, int argc, const char* const* argv) {
   parser.setEpilog("Exit codes: 0 stopped (SIGINT/SIGTERM), 2 bad option, configuration or key, 1 runtime error.");
   parser.parseOrExit(argc, argv);
-  if (o.link_id < 0 || o.link_id > 255) throw std::invalid_argument("--link-id: must be in [0, 255]");
 }
 
 }  // namespace
@@ -50,7 +48,7 @@ BridgeCommandLine parseBridgeCommandLine(int argc, const char* const* argv) {
                    "uptime would make a scenario's events all due at once)");
   parser.addOption("--identify-hover", &o.identify_log, "LOG",
                    "fit px4.thrust.hover_throttle to the hover of a flight log (docs/px4.md) and exit");
-  parseLinkCommandLine(parser, o.link, argc, argv);
+  parseLinkCommandLine(parser, argc, argv);
   if (clock != "vehicle" && clock != "start") throw std::invalid_argument("--clock: expected vehicle or start, got '" + clock + "'");
   o.clock_from_start = clock == "start";
   return o;
@@ -68,11 +66,9 @@ EmulatorCommandLine parseEmulatorCommandLine(int argc, const char* const* argv) 
                            "where the companion listens: udpout://HOST:PORT[:BIND] (default "
                            "udpout://127.0.0.1:14540:14580, as PX4 SITL), udp://[HOST]:PORT or serial:DEVICE:BAUD");
   parser.addOption("--scenario", &o.scenario_path, "FILE", "scenario whose `sim:` key changes the simulated world");
-  parser.addOption("--seed", &o.seed, "N", "noise seed, >= 0 (default: sim.seed of the config)");
-  parser.addOption("--rate", &o.rate, "FACTOR", "simulated seconds per wall second (default 1)");
-  parseLinkCommandLine(parser, o.link, argc, argv);
-  if (!(o.rate > 0.0 && o.rate <= 1000.0)) throw std::invalid_argument("--rate: must be in (0, 1000]");
-  if (o.seed < -1) throw std::invalid_argument("--seed: must be >= 0");
+  parser.addOption("--seed", &o.seed, "N", "noise seed (default: sim.seed of the config)", Range::atLeast(0));
+  parser.addOption("--rate", &o.rate, "FACTOR", "simulated seconds per wall second (default 1)", Range::openClosed(0, 1000));
+  parseLinkCommandLine(parser, argc, argv);
   return o;
 }
 

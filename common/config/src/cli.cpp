@@ -86,32 +86,49 @@ void ArgParser::addFlag(const std::string& name, bool* out, const std::string& h
 }
 
 void ArgParser::addOption(const std::string& name, std::string* out, const std::string& metavar,
-                          const std::string& help) {
-  app_->add_option(name, *out, unindented(help))->type_name(metavar);
+                          const std::string& help, Presence presence) {
+  app_->add_option(name, *out, unindented(help))->type_name(metavar)->required(presence == Presence::kRequired);
 }
 
-void ArgParser::addOption(const std::string& name, double* out, const std::string& metavar, const std::string& help) {
-  app_->add_option_function<std::string>(name, [name, out](const std::string& v) {
-        const std::string error = expectedFinite(name, v, out);
-        if (!error.empty()) throw CLI::ValidationError(error);
-      }, unindented(help))->type_name(metavar);
+void ArgParser::addOption(const std::string& name, double* out, const std::string& metavar, const std::string& help,
+                          const Range& allowed, Presence presence) {
+  addParsed(name, metavar, help, allowed, [name, out](const std::string& v) {
+    double value = 0.0;
+    const std::string error = expectedFinite(name, v, &value);
+    if (error.empty()) *out = value;
+    return std::make_pair(error, value);
+  })->required(presence == Presence::kRequired);
 }
 
 void ArgParser::addOption(const std::string& name, long long* out, const std::string& metavar,
-                          const std::string& help) {
-  app_->add_option_function<std::string>(name, [name, out](const std::string& v) {
-        const std::string error = expectedInteger(name, v, LLONG_MIN, LLONG_MAX, out);
-        if (!error.empty()) throw CLI::ValidationError(error);
-      }, unindented(help))->type_name(metavar);
+                          const std::string& help, const Range& allowed) {
+  addParsed(name, metavar, help, allowed, [name, out](const std::string& v) {
+    const std::string error = expectedInteger(name, v, LLONG_MIN, LLONG_MAX, out);
+    return std::make_pair(error, static_cast<double>(*out));
+  });
 }
 
-void ArgParser::addOption(const std::string& name, int* out, const std::string& metavar, const std::string& help) {
-  app_->add_option_function<std::string>(name, [name, out](const std::string& v) {
-        long long value = 0;
-        const std::string error = expectedInteger(name, v, INT_MIN, INT_MAX, &value);
+void ArgParser::addOption(const std::string& name, int* out, const std::string& metavar, const std::string& help,
+                          const Range& allowed) {
+  addParsed(name, metavar, help, allowed, [name, out](const std::string& v) {
+    long long value = 0;
+    const std::string error = expectedInteger(name, v, INT_MIN, INT_MAX, &value);
+    if (error.empty()) *out = static_cast<int>(value);
+    return std::make_pair(error, static_cast<double>(value));
+  });
+}
+
+// Parses a number with `parse` (its error, or the value it stored), then refuses a value outside
+// `allowed`. The stored value of a refused one does not matter: parsing fails.
+CLI::Option* ArgParser::addParsed(const std::string& name, const std::string& metavar, const std::string& help,
+                                  const Range& allowed, const NumberParser& parse) {
+  const bool bounded = allowed.hasLow() || allowed.hasHigh();
+  const std::string shown_help = unindented(help) + (bounded ? " (" + allowed.rule("") + ")" : "");
+  return app_->add_option_function<std::string>(name, [name, allowed, parse](const std::string& v) {
+        const auto [error, value] = parse(v);
         if (!error.empty()) throw CLI::ValidationError(error);
-        *out = static_cast<int>(value);
-      }, unindented(help))->type_name(metavar);
+        if (!allowed.contains(value)) throw CLI::ValidationError(name + ": " + allowed.rule("") + ", got '" + v + "'");
+      }, shown_help)->type_name(metavar);
 }
 
 void ArgParser::setEpilog(const std::string& epilog) { app_->footer(epilog); }

@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
                      "Computes the scenario metrics of a flight log (settling after each reference jump,\n"
                      "recovery after each pull, estimator accuracy, rates, solver and loop timing) and checks\n"
                      "every criterion of the scenario file.");
-    parser.addOption("--scenario", &scenario_path, "FILE", "scenario file the flight was flown with (required)");
+    parser.addOption("--scenario", &scenario_path, "FILE", "scenario file the flight was flown with", Presence::kRequired);
     parser.addOption("--vehicle", &vehicle, "PREFIX", "channel prefix of the vehicle to analyse");
     parser.addOption("--json", &json_path, "FILE", "write the full report as JSON");
     parser.addOption("--summary", &summary_path, "FILE", "also write the printed summary to FILE");
@@ -30,7 +30,6 @@ int main(int argc, char** argv) {
     parser.setEpilog("exit codes: 0 every check passes, 1 a check fails, 2 bad arguments or unreadable files");
     parser.parseOrExit(argc, argv);
     if (positional.size() != 1) throw std::invalid_argument("expected one log file (see --help)");
-    if (scenario_path.empty()) throw std::invalid_argument("--scenario is required");
 
     const mission::Scenario scenario = mission::Scenario::load(scenario_path);
     logger::FlightLog log;

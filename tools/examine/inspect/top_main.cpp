@@ -111,8 +111,9 @@ int main(int argc, char** argv) {
                      "dropped, rejected, errors) with alive / SILENT (no heartbeat for 2.5 s) / stopped.\n"
                      "Listens to every channel (all vehicles); --vehicle only prefixes its own HEARTBEAT.");
     addProcessOptions(parser, &options);
-    parser.addOption("--duration", &duration_s, "S", "stop after S seconds of wall time (default: until Ctrl-C)");
-    parser.addOption("--period", &period_s, "S", "seconds between reports (default 1)");
+    parser.addOption("--duration", &duration_s, "S", "stop after S seconds of wall time (default: until Ctrl-C)",
+                     Range::atLeast(0));
+    parser.addOption("--period", &period_s, "S", "seconds between reports (default 1)", Range::atLeast(0.1));
     parser.addFlag("--plain", &plain, "never clear the screen (default when stdout is not a terminal)");
     parser.addOption("--wait-for", &wait_for, "P1,P2,...",
                      "only wait until each named process (e.g. sdlqr-estimator) has sent a HEARTBEAT on this\n"
@@ -121,16 +122,13 @@ int main(int argc, char** argv) {
                      "only print 'sim time S' as the simulation clock (SIM_CLOCK, SIM_TRUTH) reaches each S seconds,\n"
                      "then exit 0 (1 after --timeout): fault injections timed on the flight's own clock");
     parser.addOption("--timeout", &wait_timeout_s, "S",
-                     "wall seconds for --wait-for (default 10) or --at-sim-time (default 120)");
+                     "wall seconds for --wait-for (default 10) or --at-sim-time (default 120)", Range::above(0));
     parser.setEpilog(
         "exit codes: 0 stopped by SIGINT/SIGTERM or --duration, or the wait is over; 1 --wait-for or --at-sim-time\n"
         "timed out; 2 bad option");
     parser.parseOrExit(argc, argv);
-    if (!(duration_s >= 0.0)) throw std::invalid_argument("--duration: must be >= 0, got " + std::to_string(duration_s));
-    if (!(period_s >= 0.1)) throw std::invalid_argument("--period: must be >= 0.1 s, got " + std::to_string(period_s));
     const bool clear = !plain && ::isatty(STDOUT_FILENO);
     if (wait_timeout_s < 0.0) wait_timeout_s = sim_time_marks.empty() ? 10.0 : 120.0;
-    if (!(wait_timeout_s > 0.0)) throw std::invalid_argument("--timeout: must be > 0");
     if (!wait_for.empty() && !sim_time_marks.empty()) {
       throw std::invalid_argument("--wait-for and --at-sim-time: one at a time");
     }

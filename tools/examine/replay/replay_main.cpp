@@ -95,9 +95,11 @@ void addReplayOptions(ArgParser& parser, ReplayOptions& o) {
   parser.addOption("--out", &o.out_path, "FILE", "replay log to write (default: LOG's name with .replay.lcmlog; never overwritten)");
   parser.addOption("--prefix", &o.prefix, "P", "channel prefix of the recomputed outputs (default REPLAY)");
   parser.addFlag("--fast", &o.fast, "as fast as the computer allows (the default)");
-  parser.addOption("--speed", &o.speed, "F", "pace the inputs at F x real time of the recorded simulation clock");
+  parser.addOption("--speed", &o.speed, "F", "pace the inputs at F x real time of the recorded simulation clock",
+                   Range::above(0));
   parser.addFlag("--publish", &o.publish, "also publish the recomputed outputs on the bus (watch them in lcm-spy)");
-  parser.addOption("--tolerance", &o.tolerance, "T", "count differences up to T as reproduced (default 0: bit for bit)");
+  parser.addOption("--tolerance", &o.tolerance, "T", "count differences up to T as reproduced (default 0: bit for bit)",
+                   Range::atLeast(0));
 }
 
 // Parses and checks the command line; every bad option fails before the configuration or log is read.
@@ -120,8 +122,6 @@ void parseReplayOptions(int argc, char** argv, ReplayOptions& o) {
   if (o.positional.size() != 1) throw std::invalid_argument("expected one LOG, got " + std::to_string(o.positional.size()));
   if (o.process.config_path.empty()) throw std::invalid_argument("--config: the vehicle file of the flight is required");
   if (o.fast && o.speed > 0.0) throw std::invalid_argument("--fast and --speed exclude each other");
-  if (!(o.speed >= 0.0)) throw std::invalid_argument("--speed: must be > 0");
-  if (!(o.tolerance >= 0.0)) throw std::invalid_argument("--tolerance: must be >= 0");
   if (o.prefix.empty() || o.prefix.find('/') != std::string::npos) {
     throw std::invalid_argument("--prefix: one non-empty word without '/'");
   }

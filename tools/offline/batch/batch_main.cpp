@@ -90,7 +90,7 @@ struct SlurmChoice {
 
 SlurmOptions slurmOptionsOf(const SlurmChoice& c) {
   if (c.tasks > 0 && c.nodes > 0) throw ConfigError("--nodes", "give --nodes N (whole nodes) or --tasks N, not both");
-  if (c.tasks <= 0 && c.nodes <= 0) throw ConfigError("--tasks", "--slurm needs --tasks N or --nodes N (>= 1)");
+  if (c.tasks <= 0 && c.nodes <= 0) throw ConfigError("--tasks", "--slurm needs --tasks N or --nodes N");
   if (c.nodes > 0 && c.cpus_per_task > 0) throw ConfigError("--cpus-per-task", "a task of --nodes has every core of its node");
   SlurmOptions o;
   o.tasks = c.nodes > 0 ? c.nodes : c.tasks;
@@ -134,7 +134,7 @@ int run(int argc, const char* const* argv) {
   ArgParser parser(kProgram, "Monte Carlo batches of whole flights on the in-process closed loop.");
   parser.allowPositional(&positional, "SPEC.yaml | merge SPEC.yaml SHARD_DIR...");
   parser.addOption("--out", &out_dir, "DIR", "batch folder (continued when it holds part of the same batch)");
-  parser.addOption("--jobs", &jobs, "N", "flights flown at once (default: every core)");
+  parser.addOption("--jobs", &jobs, "N", "flights flown at once (default: every core)", Range::atLeast(1));
   parser.addOption("--shard", &shard_text, "I/N", "fly only flights k with k mod N = I - 1 (join with merge)");
   parser.addFlag("--no-progress", &no_progress, "no progress line");
   parser.addOption("--refly", &refly_flight, "K", "write flight K's files into --out and fly it alone");
@@ -143,9 +143,12 @@ int run(int argc, const char* const* argv) {
   parser.addFlag("--list-parameters", &list, "the keys a batch file may perturb, and its own keys");
   SlurmChoice slurm;
   parser.addFlag("--slurm", &slurm.slurm, "submit as a Slurm job array (one shard per task), wait, requeue, merge");
-  parser.addOption("--tasks", &slurm.tasks, "N", "with --slurm: N array tasks of --cpus-per-task cores each");
-  parser.addOption("--cpus-per-task", &slurm.cpus_per_task, "C", "with --tasks: cores per task (default 1)");
-  parser.addOption("--nodes", &slurm.nodes, "N", "with --slurm: N array tasks, each a whole node (every core)");
+  parser.addOption("--tasks", &slurm.tasks, "N", "with --slurm: N array tasks of --cpus-per-task cores each",
+                   Range::atLeast(1));
+  parser.addOption("--cpus-per-task", &slurm.cpus_per_task, "C", "with --tasks: cores per task (default 1)",
+                   Range::atLeast(1));
+  parser.addOption("--nodes", &slurm.nodes, "N", "with --slurm: N array tasks, each a whole node (every core)",
+                   Range::atLeast(1));
   parser.addOption("--partition", &slurm.partition, "P", "with --slurm: the partition (default: the cluster's)");
   parser.addFlag("--no-wait", &slurm.no_wait, "with --slurm: print the job id and return (collect with merge)");
   parser.addFlag("--dry-run", &slurm.dry_run, "with --slurm: print the sbatch script, submit nothing");
@@ -160,7 +163,6 @@ int run(int argc, const char* const* argv) {
   if (positional.empty()) throw ConfigError("SPEC", "name a batch file (see --help)");
   if (out_dir.empty()) throw ConfigError("--out", "name the batch folder");
   if (!merge && positional.size() != 1) throw ConfigError("SPEC", "one batch file, got " + std::to_string(positional.size()));
-  if (jobs < 1) throw ConfigError("--jobs", "must be >= 1");
   const BatchContext context = BatchContext::load(positional[0]);
 
   if (refly_flight >= 0) return refly(context, refly_flight, controller.empty() ? context.spec.controllers[0] : controller, out_dir, batch_dir);

@@ -27,8 +27,10 @@ int run(int argc, const char* const* argv) {
                    "one folder each (DIR/<benchmark>/) and DIR/report.md the headline of them all");
   parser.addOption("--controllers", &controllers, "A,B", "only these controllers (default: the benchmark's)");
   parser.addOption("--scenarios", &scenarios, "A,B", "only these experiments (speed_sweep: the sweep)");
-  parser.addOption("--seed", &seed, "N", "every flight's noise seed (default: the benchmark's, else each scenario's)");
-  parser.addOption("--jobs", &jobs, "N", "flights flown at once (default: every core); the files do not depend on it");
+  parser.addOption("--seed", &seed, "N", "every flight's noise seed (default: the benchmark's, else each scenario's)",
+                   Range::atLeast(0));
+  parser.addOption("--jobs", &jobs, "N", "flights flown at once (default: every core); the files do not depend on it",
+                   Range::atLeast(1));
   parser.addFlag("--quiet", &quiet, "no progress lines on stderr");
   parser.addOption("--bus-files", &bus_files, "DIR",
                    "instead: write DIR/<controller>/<experiment>/{vehicle,scenario}.yaml and DIR/plan.txt to\n"
@@ -40,8 +42,6 @@ int run(int argc, const char* const* argv) {
   parser.parseOrExit(argc, argv);
   if (positional.empty()) throw ConfigError("BENCHMARK", "name a benchmark file (see --help)");
   if (out_dir.empty() && bus_files.empty()) throw ConfigError("--out", "name the output folder");
-  if (jobs < 1) throw ConfigError("--jobs", "must be >= 1");
-  if (seed < -1) throw ConfigError("--seed", "must be >= 0");
   const bool several = positional.size() > 1;
   if (several && !scenarios.empty()) throw ConfigError("--scenarios", "selects experiments of one benchmark file");
   if (several && !bus_files.empty()) throw ConfigError("--bus-files", "writes the flights of one benchmark file");

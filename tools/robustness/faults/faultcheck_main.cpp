@@ -127,7 +127,7 @@ void addCounterOptions(ArgParser& parser, Options& o) {
   parser.addOption("--forbid", &o.forbidden_text, "A,B,...", "counters that must stay 0 in every process");
   parser.addOption("--max-silence", &o.max_silence, "S",
                    "longest heartbeat gap of any process, and longest silence before the end of the log,\n"
-                   "wall time (default 2.5)");
+                   "wall time (default 2.5)", Range::above(0));
   parser.addOption("--expect", &o.expected_text, "A,B,...", "processes that must have sent heartbeats");
   parser.addOption("--may-stop", &o.may_stop_text, "A,B,...",
                    "processes that may end before the log does, with a STOPPING heartbeat\n"
@@ -136,7 +136,7 @@ void addCounterOptions(ArgParser& parser, Options& o) {
                    "processes added to --may-stop's list (a test's own publisher, say)");
   parser.addOption("--hover", &o.hover_text, "T0,T1,X,Y,Z",
                    "max |truth - (X,Y,Z)| over simulation time [T0, T1] s must stay below --max-hover-error");
-  parser.addOption("--max-hover-error", &o.max_hover_error, "M", "default 0.1 m");
+  parser.addOption("--max-hover-error", &o.max_hover_error, "M", "default 0.1 m", Range::above(0));
   parser.addFlag("--complete", &o.require_complete, "fail unless the log ends in a whole event");
   parser.addOption("--vehicle", &o.vehicle, "PREFIX", "channel prefix of the vehicle");
   parser.addOption("--kernel-drops", &o.kernel_dropped, "N",
@@ -149,25 +149,29 @@ void addOutageOptions(ArgParser& parser, Options& o) {
   parser.addOption("--gains-outage", &o.gains_outage, "KILL_US,RESTART_US",
                    "sdlqr-gains killed/restarted at these wall instants (date +%s%6N): the hover K takes over\n"
                    "after --fallback-timeout and fresh GAINS return within --max-gains-resume");
-  parser.addOption("--fallback-timeout", &o.fallback_timeout, "S", "controller.gains_fallback_s (default 1.0)");
-  parser.addOption("--max-gains-resume", &o.max_gains_resume, "S", "first GAINS after the restarted solver is up, default 0.25 s of\n"
-                   "simulation time (two 10 Hz solve periods and an estimate)");
+  parser.addOption("--fallback-timeout", &o.fallback_timeout, "S", "controller.gains_fallback_s (default 1.0)",
+                   Range::above(0));
+  parser.addOption("--max-gains-resume", &o.max_gains_resume, "S",
+                   "first GAINS after the restarted solver is up, default 0.25 s of simulation time\n"
+                   "(two 10 Hz solve periods and an estimate)", Range::above(0));
   parser.addOption("--estimator-outage", &o.estimator_outage, "KILL_US,RESTART_US",
                    "sdlqr-estimator killed/restarted: the lowlevel failsafe engages within --max-failsafe-delay,\n"
                    "tilt stays below --max-tilt, touchdown slower than --max-touchdown-speed, disarmed on the\n"
                    "ground, and never armed again to the end of the log (the mission re-sends its TAKEOFF)");
-  parser.addOption("--max-failsafe-delay", &o.max_failsafe_delay, "S", "default 0.2 s of simulation time");
-  parser.addOption("--max-tilt", &o.max_tilt, "DEG", "default 30");
-  parser.addOption("--max-touchdown-speed", &o.max_touchdown_speed, "M_S", "default 1.0");
+  parser.addOption("--max-failsafe-delay", &o.max_failsafe_delay, "S", "default 0.2 s of simulation time",
+                   Range::above(0));
+  parser.addOption("--max-tilt", &o.max_tilt, "DEG", "default 30", Range::openClosed(0, 90));
+  parser.addOption("--max-touchdown-speed", &o.max_touchdown_speed, "M_S", "default 1.0", Range::above(0));
   parser.addOption("--controller-outage", &o.controller_outage, "KILL_US,RESTART_US",
                    "sdlqr-controller killed/restarted: the failsafe holds the vehicle level (tilt below\n"
                    "--max-gap-tilt) and after the restart it is back within --return-tolerance of --setpoint\n"
                    "within --max-return-time, staying there until --settle-until");
   parser.addOption("--setpoint", &o.setpoint_text, "X,Y,Z", "held setpoint of --controller-outage [m]");
   parser.addOption("--settle-until", &o.settle_until, "T", "simulation time [s] the return must last until");
-  parser.addOption("--return-tolerance", &o.return_tolerance, "M", "default 0.1 m");
-  parser.addOption("--max-return-time", &o.max_return, "S", "default 3 s of simulation time");
-  parser.addOption("--max-gap-tilt", &o.max_gap_tilt, "DEG", "default 10: level while the controller is away");
+  parser.addOption("--return-tolerance", &o.return_tolerance, "M", "default 0.1 m", Range::above(0));
+  parser.addOption("--max-return-time", &o.max_return, "S", "default 3 s of simulation time", Range::above(0));
+  parser.addOption("--max-gap-tilt", &o.max_gap_tilt, "DEG", "default 10: level while the controller is away",
+                   Range::openClosed(0, 90));
 }
 
 void parseOptions(int argc, char** argv, Options& o) {

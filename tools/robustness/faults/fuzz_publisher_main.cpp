@@ -74,20 +74,16 @@ int main(int argc, char** argv) {
                      "Floods every channel of a vehicle with malformed, out-of-range and replayed messages (fault\n"
                      "tests; see SECURITY.md). Kinds, in turn per channel: random_bytes, truncated, oversized,\n"
                      "wrong_fingerprint, nonfinite, huge, replayed. Counts per kind in HEARTBEAT (fuzz.sent.*).");
-    parser.addOption("--duration", &duration, "S", "seconds of wall time to send for (default 10)");
-    parser.addOption("--rate", &rate, "HZ", "messages per second on each channel (default 1000)");
-    parser.addOption("--replay-age", &replay_age, "S", "age of the replayed messages (default 1)");
-    parser.addOption("--seed", &seed, "N", "random seed (default 1)");
+    parser.addOption("--duration", &duration, "S", "seconds of wall time to send for (default 10)", Range::openClosed(0, 3600));
+    parser.addOption("--rate", &rate, "HZ", "messages per second on each channel (default 1000)", Range::openClosed(0, 20000));
+    parser.addOption("--replay-age", &replay_age, "S", "age of the replayed messages (default 1)", Range::openClosed(0, 60));
+    parser.addOption("--seed", &seed, "N", "random seed (default 1)", Range::atLeast(0));
     parser.addOption("--skip", &skip_text, "A,B",
                      "channels left alone (default SIM_TRUTH: the simulator's measurement for tests,\n"
                      "                          read by no flight process; forging it corrupts only the test's own figures)");
     addProcessOptions(parser, &options);
     parser.setEpilog("exit codes: 0 done or stopped by SIGINT/SIGTERM, 1 runtime failure, 2 bad option");
     parser.parseOrExit(argc, argv);
-    if (!(duration > 0.0 && duration <= 3600.0)) throw std::invalid_argument("--duration: must be in (0, 3600] s");
-    if (!(rate > 0.0 && rate <= 20000.0)) throw std::invalid_argument("--rate: must be in (0, 20000] Hz");
-    if (!(replay_age > 0.0 && replay_age <= 60.0)) throw std::invalid_argument("--replay-age: must be in (0, 60] s");
-    if (seed < 0) throw std::invalid_argument("--seed: must be >= 0");
 
     bus::Node bus("sdlqr-fuzz-publisher", options);
     std::vector<Target> targets = makeTargets(bus, skip_text, replay_age);

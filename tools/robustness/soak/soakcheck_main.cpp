@@ -39,21 +39,16 @@ SoakCheckCommand parseCommand(int argc, const char* const* argv) {
                    "Judge a soak flight (./sdlqr soak): the log is whole and long enough, and memory, file\n"
                    "descriptors, CPU and bus latency do not grow against the first window of the run.");
   parser.addOption("--samples", &c.samples_path, "CSV",
-                   "/proc samples of the stack's processes (t,process,rss_kib,fds,cpu_seconds); required");
-  parser.addOption("--log", &c.log_path, "LOG", "the flight log; required");
-  parser.addOption("--airborne", &c.airborne, "S", "simulation seconds the vehicle must have been airborne; required");
-  parser.addOption("--window", &c.limits.window_s, "S", "window length (default 60); the first window is the reference");
+                   "/proc samples of the stack's processes (t,process,rss_kib,fds,cpu_seconds)", Presence::kRequired);
+  parser.addOption("--log", &c.log_path, "LOG", "the flight log", Presence::kRequired);
+  parser.addOption("--airborne", &c.airborne, "S", "simulation seconds the vehicle must have been airborne",
+                   Range::above(0), Presence::kRequired);
+  parser.addOption("--window", &c.limits.window_s, "S", "window length (default 60); the first window is the reference",
+                   Range::above(0));
   parser.addOption("--expect", &expect, "A,B", "processes that must have samples in every window (the launcher's)");
   parser.setEpilog("exit codes: 0 every check holds, 1 one fails, 2 bad arguments or input");
   parser.parseOrExit(argc, argv);
   c.expected = names(expect);
-  const auto fail = [](const std::string& what) {
-    std::fprintf(stderr, "sdlqr-soakcheck: %s (see --help)\n", what.c_str());
-    std::exit(2);
-  };
-  if (c.samples_path.empty() || c.log_path.empty() || c.airborne < 0.0) fail("--samples, --log and --airborne are required");
-  if (!(c.airborne > 0.0)) fail("--airborne: expected a positive number");
-  if (!(c.limits.window_s > 0.0)) fail("--window: expected a positive number");
   return c;
 }
 

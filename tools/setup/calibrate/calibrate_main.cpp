@@ -122,12 +122,10 @@ int run(int argc, char** argv) {
                    "flight's relative budgets (stack_cpu_relative_max, ...) divide by.");
   addProcessOptions(parser, &options);
   parser.addOption("--out", &out_path, "FILE", "write the calibration as YAML (default: print only)");
-  parser.addOption("--duration", &seconds, "S", "measured window, default 1.5 s");
-  parser.addOption("--rate", &rate_hz, "HZ", "pings per second, default 1000");
+  parser.addOption("--duration", &seconds, "S", "measured window, default 1.5 s", Range::closed(0.2, 60));
+  parser.addOption("--rate", &rate_hz, "HZ", "pings per second, default 1000", Range::closed(10, 5000));
   parser.setEpilog("exit codes: 0 measured, 1 no answer on the bus, 2 bad option");
   parser.parseOrExit(argc, argv);
-  if (!(seconds >= 0.2 && seconds <= 60.0)) throw std::invalid_argument("--duration: must be in [0.2, 60] s");
-  if (!(rate_hz >= 10.0 && rate_hz <= 5000.0)) throw std::invalid_argument("--rate: must be in [10, 5000] Hz");
 
   const pid_t echo = fork();
   if (echo < 0) throw std::runtime_error("fork failed");

@@ -13,8 +13,8 @@ namespace sdlqr::mission {
 // --no-clock-timeout, --resend-interval, --describe and the SCENARIO.yaml argument.
 void addMissionOptions(ArgParser& parser, MissionOptions* options, bool* describe_only,
                        std::vector<std::string>* positional);
-// Checks the options and loads the one scenario file (std::invalid_argument / ConfigError).
-Scenario loadScenarioArgument(const std::vector<std::string>& positional, const MissionOptions& options);
+// Loads the one scenario file (std::invalid_argument / ConfigError).
+Scenario loadScenarioArgument(const std::vector<std::string>& positional);
 // --describe: name, vehicle, seed, rate, duration and events as key=value lines; returns 0.
 int printDescription(const Scenario& scenario, const std::string& vehicle_path);
 

@@ -28,32 +28,27 @@ ViewCommand parseViewCommand(int argc, const char* const* argv) {
                    "newest message per channel and sends a client at most --max-rate frames a second, none while\n"
                    "its connection holds more than --max-client-buffer unsent (docs/view.md).");
   parser.addOption("--address", &c.server.address, "IP", "address to serve on (default 127.0.0.1: this machine only)");
-  parser.addOption("--port", &c.server.port, "N", "TCP port (default 8080)");
+  parser.addOption("--port", &c.server.port, "N", "TCP port (default 8080)", Range::closed(1, 65535));
   parser.addOption("--log", &c.log_path, "FILE", "play this LCM log instead of listening to the bus");
-  parser.addOption("--speed", &c.speed, "F", "with --log: log seconds per wall second (default 1, at most 64)");
+  parser.addOption("--speed", &c.speed, "F", "with --log: log seconds per wall second (default 1)", Range::openClosed(0, 64));
   parser.addFlag("--paused", &c.paused, "with --log: start paused");
   addLcmUrlOption(parser, &c.bus.lcm_url);
   addBusLayoutOption(parser, &c.bus);
   parser.addOption("--bus-netns", &c.bus_netns, "FILE",
                    "listen to the bus of this network namespace (e.g. /proc/PID/ns/net of a private flight)\n"
                    "while serving in this one (needs root)");
-  parser.addOption("--max-rate", &c.pacer.max_frame_rate_hz, "HZ", "frames a second per client, at most (default 60)");
+  parser.addOption("--max-rate", &c.pacer.max_frame_rate_hz, "HZ", "frames a second per client, at most (default 60)",
+                   Range::openClosed(0, 60));
   parser.addOption("--max-client-buffer", &max_buffer_kib, "KIB",
-                   "skip a client's frames while its connection holds more unsent (default 1024)");
+                   "skip a client's frames while its connection holds more unsent (default 1024)", Range::atLeast(1));
   parser.addOption("--web-root", &c.server.web_root, "DIR", "the page's files (default: tools/examine/view/web of the source)");
   parser.addOption("--three", &c.server.three_dir, "DIR", "the npm package three (default: node_modules/three)");
-  parser.addOption("--duration", &c.duration_s, "S", "stop after S seconds of wall time (default: at SIGINT/SIGTERM)");
+  parser.addOption("--duration", &c.duration_s, "S", "stop after S seconds of wall time (default: at SIGINT/SIGTERM)",
+                   Range::atLeast(0));
   parser.setEpilog("exit codes: 0 stopped, 1 the server failed, 2 bad option or unreadable log");
   parser.parseOrExit(argc, argv);
-  if (!(c.server.port > 0 && c.server.port < 65536)) throw std::invalid_argument("--port: expected 1..65535");
-  if (!(c.pacer.max_frame_rate_hz > 0.0 && c.pacer.max_frame_rate_hz <= 60.0)) {
-    throw std::invalid_argument("--max-rate: expected a rate in (0, 60] frames a second");
-  }
-  if (!(max_buffer_kib >= 1.0)) throw std::invalid_argument("--max-client-buffer: expected at least 1 KiB");
   c.pacer.max_buffered_bytes = static_cast<std::size_t>(max_buffer_kib * 1024.0);
   c.server.tick_hz = c.pacer.max_frame_rate_hz;
-  if (!(c.speed > 0.0 && c.speed <= 64.0)) throw std::invalid_argument("--speed: expected (0, 64]");
-  if (!(c.duration_s >= 0.0)) throw std::invalid_argument("--duration: expected >= 0");
   if (!c.log_path.empty() && !c.bus_netns.empty()) throw std::invalid_argument("--bus-netns: not with --log (no bus)");
   return c;
 }

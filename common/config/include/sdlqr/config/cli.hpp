@@ -6,13 +6,20 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "sdlqr/config/range.hpp"
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace sdlqr {
+
+// Whether parsing fails when an option is not given.
+enum class Presence { kOptional, kRequired };
 
 class ArgParser {
  public:
@@ -24,11 +31,18 @@ class ArgParser {
   // Help texts are wrapped by the caller with '\n'; the indentation of continuation lines is
   // the formatter's.
   void addFlag(const std::string& name, bool* out, const std::string& help);
-  void addOption(const std::string& name, std::string* out, const std::string& metavar, const std::string& help);
-  // Numbers: a finite double, an integer in range; anything else is "<name>: expected ...".
-  void addOption(const std::string& name, double* out, const std::string& metavar, const std::string& help);
-  void addOption(const std::string& name, int* out, const std::string& metavar, const std::string& help);
-  void addOption(const std::string& name, long long* out, const std::string& metavar, const std::string& help);
+  // A required option missing is "<name> is required".
+  void addOption(const std::string& name, std::string* out, const std::string& metavar, const std::string& help,
+                 Presence presence = Presence::kOptional);
+  // Numbers: a finite double, an integer of the type; anything else is "<name>: expected ...". A
+  // value given outside `allowed` is "<name>: must be in (0, 1000], got '5000'": the range is
+  // declared with the option, and --help shows it. What is not given keeps its default.
+  void addOption(const std::string& name, double* out, const std::string& metavar, const std::string& help,
+                 const Range& allowed = Range::finite(), Presence presence = Presence::kOptional);
+  void addOption(const std::string& name, int* out, const std::string& metavar, const std::string& help,
+                 const Range& allowed = Range::finite());
+  void addOption(const std::string& name, long long* out, const std::string& metavar, const std::string& help,
+                 const Range& allowed = Range::finite());
   // Free-form trailing text for --help (examples, exit codes).
   void setEpilog(const std::string& epilog);
   // Remaining non-option words are collected here when set; otherwise they are an error.
@@ -42,6 +56,11 @@ class ArgParser {
   const std::string& program() const { return program_; }
 
  private:
+  // A number option's text to (error, value): the error empty when it parsed.
+  using NumberParser = std::function<std::pair<std::string, double>(const std::string&)>;
+  CLI::Option* addParsed(const std::string& name, const std::string& metavar, const std::string& help,
+                         const Range& allowed, const NumberParser& parse);
+
   std::string program_;
   std::unique_ptr<CLI::App> app_;
 };
