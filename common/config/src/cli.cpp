@@ -123,7 +123,7 @@ void ArgParser::addOption(const std::string& name, int* out, const std::string& 
 CLI::Option* ArgParser::addParsed(const std::string& name, const std::string& metavar, const std::string& help,
                                   const Range& allowed, const NumberParser& parse) {
   const bool bounded = allowed.hasLow() || allowed.hasHigh();
-  const std::string shown_help = unindented(help) + (bounded ? " (" + allowed.rule("") + ")" : "");
+  const std::string shown_help = unindented(help) + (bounded ? "; " + allowed.rule("") : "");
   return app_->add_option_function<std::string>(name, [name, allowed, parse](const std::string& v) {
         const auto [error, value] = parse(v);
         if (!error.empty()) throw CLI::ValidationError(error);

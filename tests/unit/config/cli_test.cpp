@@ -76,9 +76,9 @@ TEST(ArgParser, HelpShowsEachRange) {
   ArgParser parser("program", "test");
   addNumbers(parser, n);
   const std::string help = parser.usage();
-  EXPECT_NE(help.find("messages a second (must be in (0, 1000])"), std::string::npos) << help;
-  EXPECT_NE(help.find("noise seed (must be >= 0)"), std::string::npos) << help;
-  EXPECT_NE(help.find("TCP port (must be in [1, 65535])"), std::string::npos) << help;
+  EXPECT_NE(help.find("messages a second; must be in (0, 1000]"), std::string::npos) << help;
+  EXPECT_NE(help.find("noise seed; must be >= 0"), std::string::npos) << help;
+  EXPECT_NE(help.find("TCP port; must be in [1, 65535]"), std::string::npos) << help;
 }
 
 TEST(ArgParser, ARequiredOptionMissingIsRefusedByName) {
