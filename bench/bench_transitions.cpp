@@ -13,9 +13,9 @@
 
 #include <string>
 
+#include "agile_vehicle.hpp"  // tests/support: the benchmarks' circle and figure eight
 #include "sdlqr/config/config.hpp"
 #include "sdlqr/math/lqr_params.hpp"
-#include "sdlqr/trajectory/closed_paths.hpp"
 #include "sdlqr/trajectory/path_check.hpp"
 #include "sdlqr/trajectory/speed_fit.hpp"
 #include "sdlqr/trajectory/transition.hpp"
@@ -45,12 +45,7 @@ trajectory::TransitionParams paramsFor(bool gentle) {
 
 // The first sample of the 3 m circle at `speed` [m/s]: the end of an entry, the start of a stop.
 trajectory::FlatState circleStart(double speed) {
-  trajectory::ClosedPathSpec circle;
-  circle.speed = speed;
-  circle.size = 3.0;
-  circle.center = Vec3(0.0, 0.0, 2.0);
-  return trajectory::flatStateAtStart(trajectory::sampleClosedPath(circle, agileVehicle().lqr.gravity),
-                                      agileVehicle().lqr.gravity);
+  return trajectory::flatStateAtStart(test::agileCircle(speed), agileVehicle().lqr.gravity);
 }
 
 // Args: speed [m/s], gentle (1) or shortest (0). Counters: the plan's duration and its inputs.
@@ -83,18 +78,8 @@ void BM_PlanStop(benchmark::State& state) {
 }
 BENCHMARK(BM_PlanStop)->ArgsProduct({{4, 10}, {1, 0}})->ArgNames({"speed", "gentle"})->Unit(benchmark::kMillisecond);
 
-// The lemniscate of config/compare/agile752_lemniscate.yaml (3 m half-width) at `speed` [m/s].
-Trajectory agileLemniscate(double speed) {
-  trajectory::ClosedPathSpec lemniscate;
-  lemniscate.shape = trajectory::ClosedPathShape::kLemniscate;
-  lemniscate.speed = speed;
-  lemniscate.size = 3.0;
-  lemniscate.center = Vec3(0.0, 0.0, 2.0);
-  return trajectory::sampleClosedPath(lemniscate, agileVehicle().lqr.gravity);
-}
-
 void BM_PlanStopInATurn(benchmark::State& state) {
-  const TrajectorySample& turning = agileLemniscate(9.0).samples.at(60);
+  const TrajectorySample& turning = test::agileLemniscate(9.0).samples.at(60);
   const trajectory::FlatState from = trajectory::flatStateOf(turning.x, turning.u, 0.0, agileVehicle().lqr.gravity);
   const trajectory::TransitionParams params = agileVehicle().transition;
   timePlanning(state, [&] { return trajectory::planStop(from, agileVehicle().lqr, params, 9.0); });
@@ -103,7 +88,7 @@ BENCHMARK(BM_PlanStopInATurn)->Unit(benchmark::kMillisecond);
 
 // Args: speed [m/s]. Counter: the moving samples a stop was planned from.
 void BM_CheckPath(benchmark::State& state) {
-  const Trajectory path = agileLemniscate(static_cast<double>(state.range(0)));
+  const Trajectory path = test::agileLemniscate(static_cast<double>(state.range(0)));
   const LqrParams& lqr = agileVehicle().lqr;
   const auto limits = trajectory::FeasibilityLimits::from(lqr, trajectory::peakSpeed(path) * 1.01, 0.5);
   const Vec3 hover = position(path.samples.front().x);

@@ -254,6 +254,10 @@ TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const L
   return plan;
 }
 
+// Where a stop's limits are judged at its end: at rest where it starts, heading kept (its end
+// position is free; only the speed and the inputs at rest matter to the limits).
+FlatState restAt(const FlatState& from) { return {from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw}; }
+
 // The searches in order of preference; the first that finds a transition is flown. Within
 // gentle_fraction of omega_max and c_max, then input_fraction (the feedback keeps the most room),
 // under the speed bound of the transition's ends. Where those find none: under the top speed of the
@@ -263,10 +267,6 @@ TransitionPlan search(const Make& make, const FeasibilityLimits& limits, const L
 // from a sharp turn flown near them: the agile lemniscate at 9 m/s, 28 m/s^2 into the turn, needs 40
 // of 45 m/s^2). A tier whose limits are an earlier one's is not searched again; none found: the
 // widest's report.
-// Where a stop's limits are judged at its end: at rest where it starts, heading kept (its end
-// position is free; only the speed and the inputs at rest matter to the limits).
-FlatState restAt(const FlatState& from) { return {from.position, Vec3::Zero(), Vec3::Zero(), Vec3::Zero(), from.yaw}; }
-
 template <class Make>
 TransitionPlan preferredFirst(const Make& make, const FlatState& from, const FlatState& to, const LqrParams& lqr,
                               const TransitionParams& params, double path_speed, TransitionKind kind) {

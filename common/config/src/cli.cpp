@@ -47,27 +47,54 @@ std::string unindented(const std::string& help) {
   return out;
 }
 
-std::string expectedFinite(const std::string& name, const std::string& v, double* out) {
+// A number's text into *value; the error ("<name>: expected ...") or empty.
+std::string parseNumber(const std::string& name, const std::string& v, double* value) {
   char* end = nullptr;
   errno = 0;
-  const double value = std::strtod(v.c_str(), &end);
-  if (v.empty() || *end != '\0' || errno != 0 || !std::isfinite(value)) {
+  *value = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end != '\0' || errno != 0 || !std::isfinite(*value)) {
     return name + ": expected a finite number, got '" + v + "'";
   }
-  *out = value;
   return {};
 }
 
-std::string expectedInteger(const std::string& name, const std::string& v, long long min, long long max,
-                            long long* out) {
+std::string parseInteger(const std::string& name, const std::string& v, long long min, long long max,
+                         long long* value) {
   char* end = nullptr;
   errno = 0;
-  const long long value = std::strtoll(v.c_str(), &end, 10);
-  if (v.empty() || *end != '\0' || errno != 0 || value < min || value > max) {
+  *value = std::strtoll(v.c_str(), &end, 10);
+  if (v.empty() || *end != '\0' || errno != 0 || *value < min || *value > max) {
     return name + ": expected an integer, got '" + v + "'";
   }
-  *out = value;
   return {};
+}
+
+std::string parseNumber(const std::string& name, const std::string& v, long long* value) {
+  return parseInteger(name, v, LLONG_MIN, LLONG_MAX, value);
+}
+
+std::string parseNumber(const std::string& name, const std::string& v, int* value) {
+  long long wide = 0;
+  const std::string error = parseInteger(name, v, INT_MIN, INT_MAX, &wide);
+  *value = static_cast<int>(wide);
+  return error;
+}
+
+// A number option: parsed, then refused outside `allowed`; *out set only to a value accepted.
+template <class T>
+CLI::Option* addNumber(CLI::App& app, const std::string& name, T* out, const std::string& metavar,
+                       const std::string& help, const Range& allowed) {
+  const bool bounded = allowed.hasLow() || allowed.hasHigh();
+  const std::string shown_help = unindented(help) + (bounded ? "; " + allowed.rule("") : "");
+  return app.add_option_function<std::string>(name, [name, out, allowed](const std::string& v) {
+        T value{};
+        std::string error = parseNumber(name, v, &value);
+        if (error.empty() && !allowed.contains(static_cast<double>(value))) {
+          error = name + ": " + allowed.rule("") + ", got '" + v + "'";
+        }
+        if (!error.empty()) throw CLI::ValidationError(error);
+        *out = value;
+      }, shown_help)->type_name(metavar);
 }
 
 }  // namespace
@@ -92,43 +119,17 @@ void ArgParser::addOption(const std::string& name, std::string* out, const std::
 
 void ArgParser::addOption(const std::string& name, double* out, const std::string& metavar, const std::string& help,
                           const Range& allowed, Presence presence) {
-  addParsed(name, metavar, help, allowed, [name, out](const std::string& v) {
-    double value = 0.0;
-    const std::string error = expectedFinite(name, v, &value);
-    if (error.empty()) *out = value;
-    return std::make_pair(error, value);
-  })->required(presence == Presence::kRequired);
+  addNumber(*app_, name, out, metavar, help, allowed)->required(presence == Presence::kRequired);
 }
 
 void ArgParser::addOption(const std::string& name, long long* out, const std::string& metavar,
                           const std::string& help, const Range& allowed) {
-  addParsed(name, metavar, help, allowed, [name, out](const std::string& v) {
-    const std::string error = expectedInteger(name, v, LLONG_MIN, LLONG_MAX, out);
-    return std::make_pair(error, static_cast<double>(*out));
-  });
+  addNumber(*app_, name, out, metavar, help, allowed);
 }
 
 void ArgParser::addOption(const std::string& name, int* out, const std::string& metavar, const std::string& help,
                           const Range& allowed) {
-  addParsed(name, metavar, help, allowed, [name, out](const std::string& v) {
-    long long value = 0;
-    const std::string error = expectedInteger(name, v, INT_MIN, INT_MAX, &value);
-    if (error.empty()) *out = static_cast<int>(value);
-    return std::make_pair(error, static_cast<double>(value));
-  });
-}
-
-// Parses a number with `parse` (its error, or the value it stored), then refuses a value outside
-// `allowed`. The stored value of a refused one does not matter: parsing fails.
-CLI::Option* ArgParser::addParsed(const std::string& name, const std::string& metavar, const std::string& help,
-                                  const Range& allowed, const NumberParser& parse) {
-  const bool bounded = allowed.hasLow() || allowed.hasHigh();
-  const std::string shown_help = unindented(help) + (bounded ? "; " + allowed.rule("") : "");
-  return app_->add_option_function<std::string>(name, [name, allowed, parse](const std::string& v) {
-        const auto [error, value] = parse(v);
-        if (!error.empty()) throw CLI::ValidationError(error);
-        if (!allowed.contains(value)) throw CLI::ValidationError(name + ": " + allowed.rule("") + ", got '" + v + "'");
-      }, shown_help)->type_name(metavar);
+  addNumber(*app_, name, out, metavar, help, allowed);
 }
 
 void ArgParser::setEpilog(const std::string& epilog) { app_->footer(epilog); }

@@ -6,14 +6,12 @@
 #include <functional>
 #include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "sdlqr/config/range.hpp"
 
 namespace CLI {
 class App;
-class Option;
 }
 
 namespace sdlqr {
@@ -56,11 +54,6 @@ class ArgParser {
   const std::string& program() const { return program_; }
 
  private:
-  // A number option's text to (error, value): the error empty when it parsed.
-  using NumberParser = std::function<std::pair<std::string, double>(const std::string&)>;
-  CLI::Option* addParsed(const std::string& name, const std::string& metavar, const std::string& help,
-                         const Range& allowed, const NumberParser& parse);
-
   std::string program_;
   std::unique_ptr<CLI::App> app_;
 };
